@@ -1,0 +1,65 @@
+#pragma once
+// A small command-line parser for the kumite subcommands: `--flag`, `--flag value`, `--flag=value` and
+// positionals. Unknown flags and missing values are usage errors (exit status 2).
+
+#include "kumite/core/result.h"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace kumite::cli {
+
+inline constexpr int k_exit_ok = 0;
+inline constexpr int k_exit_bad_input = 1;
+inline constexpr int k_exit_usage = 2;
+
+struct FlagSpec {
+    std::string name;       // without dashes: "unit"
+    std::string value_name; // empty for a switch: "auto|m|cm|mm|in|cmu"
+    std::string help;
+};
+
+struct CommandSpec {
+    std::string name;        // "inspect"
+    std::string synopsis;    // "FILE.bvh [--unit ...] [--json]"
+    std::string description; // one paragraph
+    int min_positionals = 0;
+    int max_positionals = 0;
+    std::vector<FlagSpec> flags;
+};
+
+struct Arguments {
+    std::vector<std::string> positionals;
+    std::map<std::string, std::string> values; // flags with values
+    std::vector<std::string> switches;         // flags without values
+
+    bool has(const std::string& flag) const;
+    std::optional<std::string> value(const std::string& flag) const;
+};
+
+// Parses argv after the subcommand name. `--help` is reported as help_requested.
+struct ParseOutcome {
+    Arguments arguments;
+    bool help_requested = false;
+};
+Result<ParseOutcome> parse_arguments(const CommandSpec& spec, int argc, char** argv);
+
+std::string usage_text(const CommandSpec& spec);
+
+// Flags every capture-reading command shares.
+FlagSpec unit_flag();
+FlagSpec mocap_root_flag();
+FlagSpec body_map_flag();
+FlagSpec json_flag();
+
+// Parses and handles --help and usage errors: returns the exit status when the command should stop now.
+std::optional<int> parse_command_line(const CommandSpec& spec, int argc, char** argv, Arguments& arguments);
+
+// Prints "kumite NAME: message" and returns the usage exit status.
+int usage_error(const CommandSpec& spec, const std::string& message);
+// Prints "kumite: message" to stderr and returns the bad-input exit status.
+int input_error(const std::string& message);
+
+} // namespace kumite::cli

@@ -1,0 +1,67 @@
+#include "capture_loading.h"
+
+#include "kumite/formats/body_map_file.h"
+
+#include <cstdlib>
+#include <iostream>
+#include <unistd.h>
+
+namespace kumite::cli {
+
+Result<CaptureOptions> capture_options_from(const Arguments& arguments) {
+    CaptureOptions options;
+    if (const std::optional<std::string> unit = arguments.value("unit"); unit && *unit != "auto") {
+        Result<LengthUnit> parsed = length_unit_from_name(*unit);
+        if (!parsed) return parsed.error();
+        options.read.unit = *parsed;
+    }
+    const std::optional<std::string> root = arguments.value("mocap-root");
+    options.mocap_root = root ? std::filesystem::path(*root) : default_mocap_root();
+    if (const std::optional<std::string> body_map = arguments.value("body-map")) options.body_map_file = *body_map;
+    return options;
+}
+
+std::filesystem::path resolve_capture_path(const std::filesystem::path& path, const std::filesystem::path& mocap_root) {
+    std::error_code error;
+    if (std::filesystem::exists(path, error) || path.is_absolute()) return path;
+    const std::filesystem::path under_root = mocap_root / path;
+    if (std::filesystem::exists(under_root, error)) return under_root;
+    return path;
+}
+
+Result<BvhFile> load_capture(const std::filesystem::path& given_path, const CaptureOptions& options) {
+    const std::filesystem::path path = resolve_capture_path(given_path, options.mocap_root);
+    Result<BvhFile> file = bvh_read_file(path, options.read);
+    if (!file) return file;
+    std::error_code error;
+    std::optional<std::filesystem::path> override_path = options.body_map_file;
+    if (!override_path && std::filesystem::exists(body_map_sidecar_path(path), error)) {
+        override_path = body_map_sidecar_path(path);
+    }
+    if (override_path) {
+        Result<BodyMap> map = body_map_apply_override_file(file->body_map, file->clip.skeleton, *override_path);
+        if (!map) return map.error();
+        file->body_map = *map;
+    }
+    return file;
+}
+
+std::filesystem::path default_mocap_root() {
+    if (const char* root = std::getenv("KUMITE_MOCAP_ROOT"); root && *root) return root;
+    std::error_code error;
+    if (std::filesystem::exists("data/mocap", error)) return "data/mocap";
+    const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
+    if (!error) {
+        const std::filesystem::path repository_root = executable.parent_path().parent_path().parent_path();
+        if (std::filesystem::exists(repository_root / "data/mocap", error)) return repository_root / "data/mocap";
+    }
+    return "data/mocap";
+}
+
+nlohmann::json json_vec3(const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
+
+void print_json(const nlohmann::json& document) {
+    std::cout << document.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+}
+
+} // namespace kumite::cli

@@ -1,0 +1,39 @@
+#pragma once
+// What every capture-reading subcommand shares: the --unit / --mocap-root / --body-map flags, locating a
+// capture, reading it with its body map override, and printing JSON.
+
+#include "arguments.h"
+#include "kumite/formats/bvh_reader.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <optional>
+
+namespace kumite::cli {
+
+struct CaptureOptions {
+    BvhReadOptions read;
+    std::filesystem::path mocap_root;
+    std::optional<std::filesystem::path> body_map_file;
+};
+
+// Reads the shared flags; a bad --unit is a usage error.
+Result<CaptureOptions> capture_options_from(const Arguments& arguments);
+
+// `path` as given when it exists, else under the mocap root when relative.
+std::filesystem::path resolve_capture_path(const std::filesystem::path& path, const std::filesystem::path& mocap_root);
+
+// Reads the capture and applies --body-map, or the sidecar FILE.bodymap.json when there is one.
+Result<BvhFile> load_capture(const std::filesystem::path& path, const CaptureOptions& options);
+
+// The default mocap root: $KUMITE_MOCAP_ROOT, else data/mocap in the working directory, else the repository's
+// data/mocap found from the executable (build/bin/kumite -> data/mocap).
+std::filesystem::path default_mocap_root();
+
+nlohmann::json json_vec3(const Eigen::Vector3d& v);
+
+// Prints exactly one JSON document and a newline on stdout; invalid UTF-8 in names is replaced, not thrown.
+void print_json(const nlohmann::json& document);
+
+} // namespace kumite::cli

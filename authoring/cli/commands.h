@@ -1,0 +1,23 @@
+#pragma once
+// The kumite subcommands. Each takes the arguments after its name and returns the process exit status
+// (0 success, 1 bad input, 2 usage error).
+
+#include "arguments.h"
+
+namespace kumite::cli {
+
+struct Command {
+    const CommandSpec& (*spec)();
+    int (*run)(int argc, char** argv);
+};
+
+const CommandSpec& inspect_spec();
+int run_inspect(int argc, char** argv);
+
+const CommandSpec& positions_spec();
+int run_positions(int argc, char** argv);
+
+const CommandSpec& convert_spec();
+int run_convert(int argc, char** argv);
+
+} // namespace kumite::cli

@@ -1,0 +1,21 @@
+#pragma once
+// Forward kinematics: local joint transforms to model (world) transforms. Allocation-free: the caller sizes
+// the output spans to the skeleton's joint count. Positions in metres, in the clip's world axes.
+
+#include "kumite/core/clip.h"
+
+#include <span>
+
+namespace kumite {
+
+// model_positions / model_rotations: [joint_count] outputs. The root is placed at pose.root_translation;
+// every other joint at its parent's transform applied to its local translation (or rest offset).
+void forward_kinematics(std::span<Eigen::Vector3d> model_positions, std::span<Eigen::Quaterniond> model_rotations,
+                        const Skeleton& skeleton, const PoseView& pose);
+
+// End Site positions for a pose whose joints went through forward_kinematics: [end_site_count] output.
+void end_site_positions(std::span<Eigen::Vector3d> end_site_model_positions, const Skeleton& skeleton,
+                        std::span<const Eigen::Vector3d> model_positions,
+                        std::span<const Eigen::Quaterniond> model_rotations);
+
+} // namespace kumite

@@ -1,0 +1,65 @@
+#pragma once
+// BVH reader: HIERARCHY + MOTION text into a Clip in metres, plus the channel layout the writer needs to give
+// the file back with the same hierarchy, names, channel order and rotation orders.
+//
+// Accepts any channel order per joint (0-6 channels, each at most once), mixed rotation orders, CRLF/LF/mixed
+// line ends, tabs, numbers like ".1", "2." and "1e-05", blank lines, joints without End Site. Errors come back
+// as a Result naming the file and line and what was expected; a hostile file costs at most memory proportional
+// to its size (frame counts are checked against the bytes that follow).
+
+#include "kumite/core/body_map.h"
+#include "kumite/core/clip.h"
+#include "kumite/core/euler.h"
+#include "kumite/core/result.h"
+#include "kumite/formats/length_unit.h"
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace kumite {
+
+enum class BvhChannel : std::uint8_t { x_position, y_position, z_position, x_rotation, y_rotation, z_rotation };
+
+std::string_view bvh_channel_name(BvhChannel channel); // "Xposition"
+
+struct BvhJointChannels {
+    std::array<BvhChannel, 6> channels{};
+    int count = 0;
+    EulerOrder rotation_order; // rotation axes as listed; axes without a channel appended in X, Y, Z order
+
+    bool has_position() const;
+    bool has_rotation() const;
+};
+
+struct BvhLayout {
+    std::vector<BvhJointChannels> joints; // [joint]
+    int channel_count() const;
+};
+
+struct BvhReadOptions {
+    std::optional<LengthUnit> unit;                 // none: detect from the standing height
+    std::size_t max_file_bytes = std::size_t(1) << 30;
+};
+
+struct BvhFile {
+    Clip clip;             // metres
+    BvhLayout layout;
+    LengthUnit unit;       // the file's unit (detected or forced)
+    bool unit_detected = true;
+    double height_m = 0.0; // standing height after conversion
+    BodyMap body_map;      // detected from the joint names
+};
+
+inline constexpr int k_bvh_max_joints = 10000;
+
+// Parses BVH text; `source_name` (usually the path) prefixes error messages.
+Result<BvhFile> bvh_parse(std::string_view text, std::string_view source_name, const BvhReadOptions& options = {});
+
+// Reads and parses a file; errors for unreadable, oversized or malformed files.
+Result<BvhFile> bvh_read_file(const std::filesystem::path& path, const BvhReadOptions& options = {});
+
+} // namespace kumite

@@ -1,0 +1,20 @@
+#pragma once
+// What the BVH reader knows between its passes: the hierarchy in file units and the MOTION header.
+
+#include "kumite/formats/bvh_reader.h"
+#include "text_cursor.h"
+
+namespace kumite {
+
+struct RawBvh {
+    Skeleton skeleton; // file units
+    BvhLayout layout;
+    double frame_time_s = 0.0;
+    int frame_count = 0;
+};
+
+// Parses raw.frame_count frames (one per line, raw.layout.channel_count() values each) into clip's per-frame
+// arrays, in file units. The cursor stands after "Frame Time: t".
+Result<void> bvh_parse_frames(TextCursor& cursor, std::string_view source, const RawBvh& raw, Clip& clip);
+
+} // namespace kumite

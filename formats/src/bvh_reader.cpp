@@ -1,0 +1,257 @@
+#include "kumite/formats/bvh_reader.h"
+
+#include "kumite/core/standing_height.h"
+#include "bvh_raw.h"
+#include "text_cursor.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <system_error>
+
+namespace kumite {
+namespace {
+
+bool equals_ignore_case(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
+std::optional<BvhChannel> channel_from_name(std::string_view name) {
+    for (int i = 0; i < 6; ++i) {
+        if (equals_ignore_case(name, bvh_channel_name(static_cast<BvhChannel>(i)))) return static_cast<BvhChannel>(i);
+    }
+    return std::nullopt;
+}
+
+class HierarchyParser {
+public:
+    HierarchyParser(TextCursor& cursor, std::string_view source) : m_cursor(cursor), m_source(source) {}
+
+    Result<void> parse(RawBvh& raw);
+
+private:
+    Error fail(const std::string& what) const {
+        return make_error(ErrorCode::parse, std::string(m_source) + ":" + std::to_string(m_cursor.line()) + ": " + what);
+    }
+    Result<Eigen::Vector3d> parse_offset();
+    Result<void> parse_channels(BvhJointChannels& channels);
+    Result<void> open_joint(RawBvh& raw, int parent);
+
+    TextCursor& m_cursor;
+    std::string_view m_source;
+    std::vector<int> m_open_joints; // joints whose '}' is still expected
+    std::vector<bool> m_has_offset;
+};
+
+Result<Eigen::Vector3d> HierarchyParser::parse_offset() {
+    Eigen::Vector3d offset;
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!m_cursor.parse_number(offset[axis])) {
+            return fail("expected 3 numbers after OFFSET, found " + m_cursor.peek_for_message());
+        }
+    }
+    return offset;
+}
+
+Result<void> HierarchyParser::parse_channels(BvhJointChannels& joint) {
+    double count = 0;
+    if (!m_cursor.parse_number(count) || count != std::floor(count) || count < 0 || count > 6) {
+        return fail("expected a channel count from 0 to 6 after CHANNELS, found " + m_cursor.peek_for_message());
+    }
+    joint.count = static_cast<int>(count);
+    std::array<bool, 6> seen{};
+    int rotation_axes = 0;
+    for (int i = 0; i < joint.count; ++i) {
+        const std::string_view token = m_cursor.next_token();
+        const std::optional<BvhChannel> channel = channel_from_name(token);
+        if (!channel) {
+            return fail("expected a channel name (Xposition ... Zrotation), found '" + std::string(token) + "'");
+        }
+        if (seen[static_cast<int>(*channel)]) return fail("channel " + std::string(token) + " listed twice");
+        seen[static_cast<int>(*channel)] = true;
+        joint.channels[i] = *channel;
+        if (*channel >= BvhChannel::x_rotation) {
+            joint.rotation_order.axes[rotation_axes++] = static_cast<int>(*channel) - 3;
+        }
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+        if (!seen[3 + axis]) joint.rotation_order.axes[rotation_axes++] = axis;
+    }
+    return {};
+}
+
+Result<void> HierarchyParser::open_joint(RawBvh& raw, int parent) {
+    std::string_view name = m_cursor.rest_of_line();
+    bool brace_on_name_line = false;
+    if (name.ends_with("{")) {
+        brace_on_name_line = true;
+        name.remove_suffix(1);
+        while (!name.empty() && TextCursor::is_blank(name.back())) name.remove_suffix(1);
+    }
+    if (name.empty()) return fail("expected a joint name");
+    if (raw.skeleton.joint_count() >= k_bvh_max_joints) {
+        return make_error(ErrorCode::limit, std::string(m_source) + ":" + std::to_string(m_cursor.line()) +
+                                                ": more than " + std::to_string(k_bvh_max_joints) + " joints");
+    }
+    if (!brace_on_name_line) {
+        const std::string_view brace = m_cursor.next_token();
+        if (brace != "{") return fail("expected '{' after joint " + std::string(name) + ", found '" + std::string(brace) + "'");
+    }
+    raw.skeleton.names.emplace_back(name);
+    raw.skeleton.parents.push_back(parent);
+    raw.skeleton.rest_offsets.push_back(Eigen::Vector3d::Zero());
+    raw.layout.joints.emplace_back();
+    m_has_offset.push_back(false);
+    m_open_joints.push_back(raw.skeleton.joint_count() - 1);
+    return {};
+}
+
+Result<void> HierarchyParser::parse(RawBvh& raw) {
+    if (const std::string_view token = m_cursor.next_token(); !equals_ignore_case(token, "HIERARCHY")) {
+        return fail("expected HIERARCHY at the start of a BVH file, found '" + std::string(token.substr(0, 24)) + "'");
+    }
+    if (const std::string_view token = m_cursor.next_token(); !equals_ignore_case(token, "ROOT")) {
+        return fail("expected ROOT, found '" + std::string(token.substr(0, 24)) + "'");
+    }
+    if (Result<void> opened = open_joint(raw, -1); !opened) return opened;
+
+    while (!m_open_joints.empty()) {
+        const std::string_view token = m_cursor.next_token();
+        const int joint = m_open_joints.back();
+        if (token.empty()) {
+            return fail("the hierarchy ends inside joint " + raw.skeleton.names[joint] + " (missing '}')");
+        } else if (equals_ignore_case(token, "OFFSET")) {
+            Result<Eigen::Vector3d> offset = parse_offset();
+            if (!offset) return offset.error();
+            raw.skeleton.rest_offsets[joint] = *offset;
+            m_has_offset[joint] = true;
+        } else if (equals_ignore_case(token, "CHANNELS")) {
+            if (Result<void> parsed = parse_channels(raw.layout.joints[joint]); !parsed) return parsed;
+        } else if (equals_ignore_case(token, "JOINT")) {
+            if (Result<void> opened = open_joint(raw, joint); !opened) return opened;
+        } else if (equals_ignore_case(token, "End")) {
+            const std::string_view site = m_cursor.next_token();
+            if (!equals_ignore_case(site, "Site")) return fail("expected 'Site' after 'End', found '" + std::string(site) + "'");
+            if (m_cursor.next_token() != "{") return fail("expected '{' after End Site");
+            if (!equals_ignore_case(m_cursor.next_token(), "OFFSET")) return fail("expected OFFSET in End Site");
+            Result<Eigen::Vector3d> offset = parse_offset();
+            if (!offset) return offset.error();
+            if (m_cursor.next_token() != "}") return fail("expected '}' closing End Site");
+            raw.skeleton.end_sites.push_back({joint, *offset});
+        } else if (token == "}") {
+            if (!m_has_offset[joint]) return fail("joint " + raw.skeleton.names[joint] + " has no OFFSET");
+            m_open_joints.pop_back();
+        } else if (equals_ignore_case(token, "ROOT")) {
+            return make_error(ErrorCode::unsupported, std::string(m_source) + ":" + std::to_string(m_cursor.line()) +
+                                                          ": a second ROOT inside a joint (missing '}')");
+        } else {
+            return fail("expected OFFSET, CHANNELS, JOINT, End Site or '}' in joint " + raw.skeleton.names[joint] +
+                        ", found '" + std::string(token.substr(0, 24)) + "'");
+        }
+    }
+    return {};
+}
+
+Result<void> parse_motion_header(TextCursor& cursor, std::string_view source, RawBvh& raw) {
+    auto fail = [&](const std::string& what) {
+        return make_error(ErrorCode::parse, std::string(source) + ":" + std::to_string(cursor.line()) + ": " + what);
+    };
+    const std::string_view motion = cursor.next_token();
+    if (equals_ignore_case(motion, "ROOT")) {
+        return make_error(ErrorCode::unsupported, std::string(source) + ":" + std::to_string(cursor.line()) +
+                                                      ": several ROOT hierarchies in one file are not supported");
+    }
+    if (!equals_ignore_case(motion, "MOTION")) {
+        return fail(motion.empty() ? "the file ends after the hierarchy (expected MOTION)"
+                                   : "expected MOTION after the hierarchy, found '" + std::string(motion.substr(0, 24)) + "'");
+    }
+    std::string_view frames = cursor.next_token();
+    if (equals_ignore_case(frames, "Frames")) frames = cursor.next_token(); // "Frames :"
+    else if (!equals_ignore_case(frames.substr(0, 7), "Frames:")) return fail("expected 'Frames:'");
+    double frame_count = 0;
+    if (!cursor.parse_number(frame_count) || frame_count < 0 || frame_count != std::floor(frame_count) ||
+        frame_count > 1e8) {
+        return fail("expected a frame count after 'Frames:', found " + cursor.peek_for_message());
+    }
+    raw.frame_count = static_cast<int>(frame_count);
+    if (!equals_ignore_case(cursor.next_token(), "Frame")) return fail("expected 'Frame Time:'");
+    if (!equals_ignore_case(cursor.next_token().substr(0, 5), "Time:")) return fail("expected 'Frame Time:'");
+    if (!cursor.parse_number(raw.frame_time_s) || raw.frame_time_s <= 0.0) {
+        return fail("expected a positive frame time in seconds after 'Frame Time:', found " + cursor.peek_for_message());
+    }
+    return {};
+}
+
+} // namespace
+
+std::string_view bvh_channel_name(BvhChannel channel) {
+    static constexpr std::array<std::string_view, 6> k_names = {"Xposition", "Yposition", "Zposition",
+                                                                "Xrotation", "Yrotation", "Zrotation"};
+    return k_names[static_cast<int>(channel)];
+}
+
+bool BvhJointChannels::has_position() const {
+    return std::any_of(channels.begin(), channels.begin() + count, [](BvhChannel c) { return c <= BvhChannel::z_position; });
+}
+
+bool BvhJointChannels::has_rotation() const {
+    return std::any_of(channels.begin(), channels.begin() + count, [](BvhChannel c) { return c >= BvhChannel::x_rotation; });
+}
+
+int BvhLayout::channel_count() const {
+    int count = 0;
+    for (const BvhJointChannels& joint : joints) count += joint.count;
+    return count;
+}
+
+Result<BvhFile> bvh_parse(std::string_view text, std::string_view source_name, const BvhReadOptions& options) {
+    TextCursor cursor(text);
+    RawBvh raw;
+    HierarchyParser hierarchy(cursor, source_name);
+    if (Result<void> parsed = hierarchy.parse(raw); !parsed) return parsed.error();
+    if (Result<void> parsed = parse_motion_header(cursor, source_name, raw); !parsed) return parsed.error();
+
+    BvhFile file;
+    if (Result<void> parsed = bvh_parse_frames(cursor, source_name, raw, file.clip); !parsed) return parsed.error();
+    file.clip.skeleton = std::move(raw.skeleton);
+    file.clip.frame_time_s = raw.frame_time_s;
+    file.layout = std::move(raw.layout);
+
+    // Unit: measure in file units, then convert every length once.
+    file.body_map = detect_body_map(file.clip.skeleton);
+    const double height_in_file_units = standing_height(file.clip, file.body_map).height;
+    file.unit_detected = !options.unit.has_value();
+    file.unit = options.unit ? *options.unit : length_unit_for_height(height_in_file_units);
+    const double scale = file.unit.metres;
+    for (Eigen::Vector3d& offset : file.clip.skeleton.rest_offsets) offset *= scale;
+    for (EndSite& end_site : file.clip.skeleton.end_sites) end_site.offset_in_joint *= scale;
+    for (Eigen::Vector3d& translation : file.clip.root_translations) translation *= scale;
+    for (Eigen::Vector3d& translation : file.clip.local_translations) translation *= scale;
+    file.height_m = height_in_file_units * scale;
+    return file;
+}
+
+Result<BvhFile> bvh_read_file(const std::filesystem::path& path, const BvhReadOptions& options) {
+    const std::string source = path.string();
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error)) {
+        return make_error(ErrorCode::io, source + ": is a directory, expected a .bvh file");
+    }
+    std::ifstream stream(path, std::ios::binary);
+    if (!stream) return make_error(ErrorCode::io, source + ": cannot open file (does it exist and is it readable?)");
+    stream.seekg(0, std::ios::end);
+    const std::streamoff size = stream.tellg();
+    if (size < 0) return make_error(ErrorCode::io, source + ": cannot determine the file size");
+    if (static_cast<std::size_t>(size) > options.max_file_bytes) {
+        return make_error(ErrorCode::limit, source + ": file is " + std::to_string(size) + " bytes, more than the " +
+                                                std::to_string(options.max_file_bytes) + "-byte limit for a BVH file");
+    }
+    std::string text(static_cast<std::size_t>(size), '\0');
+    stream.seekg(0);
+    if (!stream.read(text.data(), size)) return make_error(ErrorCode::io, source + ": read failed");
+    return bvh_parse(text, source, options);
+}
+
+} // namespace kumite
