@@ -1,0 +1,123 @@
+// The kumite executable as users and acceptance scripts call it: exit codes, messages, JSON keys.
+
+#include "support/test_paths.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+using kumite::test::run_command;
+
+namespace {
+
+std::string kumite_exe() { return (kumite::test::bin_dir() / "kumite").string(); }
+
+std::filesystem::path write_text(const std::string& name, const std::string& text) {
+    const std::filesystem::path path = kumite::test::make_temp_dir("cli") / name;
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+}
+
+const std::string k_small_bvh =
+    "HIERARCHY\nROOT Hips\n{\n OFFSET 0 0 0\n CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n"
+    " JOINT Spine\n {\n  OFFSET 0 10 0\n  CHANNELS 3 Zrotation Xrotation Yrotation\n  End Site\n  {\n   OFFSET 0 5 0\n  }\n }\n}\n"
+    "MOTION\nFrames: 2\nFrame Time: 0.04\n0 90 0 0 0 0 0 0 0\n0 90 0 90 0 0 0 0 0\n";
+
+} // namespace
+
+TEST_CASE("cli: --help and usage errors", "[cli]") {
+    CHECK(run_command(kumite_exe() + " --help").status == 0);
+    for (const char* command : {"inspect", "positions", "convert"}) {
+        const auto help = run_command(kumite_exe() + " " + command + " --help");
+        CHECK(help.status == 0);
+        CHECK_THAT(help.out, Catch::Contains(std::string("usage: kumite ") + command));
+    }
+    const auto unknown_command = run_command(kumite_exe() + " frobnicate");
+    CHECK(unknown_command.status == 2);
+    CHECK_THAT(unknown_command.err, Catch::Contains("unknown command"));
+
+    const std::string file = write_text("small.bvh", k_small_bvh).string();
+    const auto unknown_flag = run_command(kumite_exe() + " inspect " + file + " --bogus");
+    CHECK(unknown_flag.status == 2);
+    CHECK_THAT(unknown_flag.err, Catch::Contains("unknown flag --bogus"));
+    CHECK(std::count(unknown_flag.err.begin(), unknown_flag.err.end(), '\n') == 1);
+
+    CHECK(run_command(kumite_exe() + " inspect " + file + " --unit furlong").status == 2);
+    CHECK(run_command(kumite_exe() + " inspect").status == 2);
+    CHECK(run_command(kumite_exe() + " positions " + file + " --frames 7").status == 2);
+    CHECK(run_command(kumite_exe() + " positions " + file + " --frames 1,x").status == 2);
+    CHECK(run_command(kumite_exe() + " positions " + file + " --all --frames 0").status == 2);
+}
+
+TEST_CASE("cli: inspect --json has the contract's keys", "[cli]") {
+    const std::string file = write_text("small.bvh", k_small_bvh).string();
+    const auto result = run_command(kumite_exe() + " inspect " + file + " --json --unit cm");
+    REQUIRE(result.status == 0);
+    const nlohmann::json document = nlohmann::json::parse(result.out);
+    for (const char* key : {"joints", "joint_names", "frames", "fps", "duration_s", "unit", "unit_scale_m", "height_m",
+                            "rotation_orders", "body_map", "unmapped"}) {
+        CHECK(document.contains(key));
+    }
+    CHECK(document["joints"] == 2);
+    CHECK(document["frames"] == 2);
+    CHECK(document["fps"].get<double>() == Approx(25.0));
+    CHECK(document["duration_s"].get<double>() == Approx(0.04));
+    CHECK(document["unit"] == "cm");
+    CHECK(document["unit_scale_m"].get<double>() == Approx(0.01));
+    CHECK(document["rotation_orders"] == nlohmann::json::array({"ZXY"}));
+    CHECK(document["body_map"].is_object());
+}
+
+TEST_CASE("cli: positions --json gives FK positions in metres", "[cli]") {
+    const std::string file = write_text("small.bvh", k_small_bvh).string();
+    const auto result = run_command(kumite_exe() + " positions " + file + " --frames 0,1 --unit cm --json");
+    REQUIRE(result.status == 0);
+    const nlohmann::json document = nlohmann::json::parse(result.out);
+    CHECK(document["joint_names"] == nlohmann::json::array({"Hips", "Spine"}));
+    CHECK(document["frames"]["0"][1][1].get<double>() == Approx(1.0));
+    CHECK(document["frames"]["1"][1][0].get<double>() == Approx(-0.1)); // Hips turned 90 deg about Z
+    const auto all = run_command(kumite_exe() + " positions " + file + " --all --unit cm --json");
+    CHECK(nlohmann::json::parse(all.out)["frames"].size() == 2);
+}
+
+TEST_CASE("cli: malformed files exit 1 with file:line", "[cli]") {
+    std::string broken = k_small_bvh;
+    broken.replace(broken.rfind("0 90 0 90"), 9, "0 90 0 zz");
+    const std::string file = write_text("broken.bvh", broken).string();
+    for (const char* command : {"inspect", "positions"}) {
+        const auto result = run_command(kumite_exe() + " " + command + " " + file + " --json");
+        CHECK(result.status == 1);
+        CHECK(result.out.empty());
+        CHECK_THAT(result.err, Catch::Contains(file + ":20:")); // the second frame line
+    }
+    const auto missing = run_command(kumite_exe() + " inspect /nonexistent/x.bvh");
+    CHECK(missing.status == 1);
+    CHECK_THAT(missing.err, Catch::Contains("/nonexistent/x.bvh"));
+}
+
+TEST_CASE("cli: convert round trip and atomic failure", "[cli]") {
+    const std::filesystem::path file = write_text("small.bvh", k_small_bvh);
+    const std::filesystem::path out = file.parent_path() / "out.bvh";
+    REQUIRE(run_command(kumite_exe() + " convert " + file.string() + " " + out.string() + " --unit cm").status == 0);
+    const auto before = run_command(kumite_exe() + " positions " + file.string() + " --all --unit cm --json");
+    const auto after = run_command(kumite_exe() + " positions " + out.string() + " --all --unit cm --json");
+    const nlohmann::json a = nlohmann::json::parse(before.out), b = nlohmann::json::parse(after.out);
+    for (const auto& [frame, positions] : a["frames"].items()) {
+        for (size_t joint = 0; joint < positions.size(); ++joint) {
+            for (int axis = 0; axis < 3; ++axis) {
+                CHECK(b["frames"][frame][joint][axis].get<double>() == Approx(positions[joint][axis].get<double>()).margin(1e-9));
+            }
+        }
+    }
+    const auto failed = run_command(kumite_exe() + " convert " + file.string() + " /nonexistent/dir/out.bvh");
+    CHECK(failed.status == 1);
+    CHECK_THAT(failed.err, Catch::Contains("/nonexistent/dir/out.bvh"));
+}
+
+TEST_CASE("cli: relative capture paths resolve under --mocap-root", "[cli]") {
+    const std::filesystem::path file = write_text("rooted.bvh", k_small_bvh);
+    const auto result = run_command("cd / && " + kumite_exe() + " inspect rooted.bvh --mocap-root " +
+                                    file.parent_path().string() + " --json");
+    CHECK(result.status == 0);
+}

@@ -1,0 +1,154 @@
+#include "kumite/core/body_map.h"
+#include "support/test_paths.h"
+
+#include <catch2/catch.hpp>
+
+#include <map>
+
+using namespace kumite;
+
+namespace {
+
+// A skeleton from "name parent" pairs (parents listed before children); offsets do not matter here.
+Skeleton skeleton_from(std::initializer_list<std::pair<const char*, const char*>> joints) {
+    Skeleton skeleton;
+    for (const auto& [name, parent] : joints) {
+        skeleton.names.push_back(name);
+        skeleton.parents.push_back(parent ? *skeleton.find(parent) : -1);
+        skeleton.rest_offsets.push_back(Eigen::Vector3d::Zero());
+    }
+    return skeleton;
+}
+
+std::map<std::string, std::string> named_map(const Skeleton& skeleton) {
+    const BodyMap map = detect_body_map(skeleton);
+    std::map<std::string, std::string> result;
+    for (int part = 0; part < k_body_part_count; ++part) {
+        if (map.joints[part] >= 0) result[std::string(body_part_name(BodyPart(part)))] = skeleton.names[map.joints[part]];
+    }
+    return result;
+}
+
+} // namespace
+
+TEST_CASE("split_joint_name: prefixes and side marks of the corpus's schemes", "[core]") {
+    struct Case { const char* name; Side side; const char* base; };
+    for (const Case& c : {Case{"mixamorig:LeftForeArm", Side::left, "forearm"}, Case{"CC_Base_L_Thigh", Side::left, "thigh"},
+                          Case{"Hand_R", Side::right, "hand"}, Case{"UpperArm_L", Side::left, "upperarm"},
+                          Case{"Character1_RightUpLeg", Side::right, "upleg"}, Case{"LHipJoint", Side::left, "hipjoint"},
+                          Case{"lhand", Side::left, "hand"}, Case{"rhand", Side::right, "hand"}, Case{"hand.L", Side::left, "hand"},
+                          Case{"LowerBack", Side::none, "lowerback"}, Case{"Hips", Side::none, "hips"},
+                          Case{"RightHand_End", Side::right, "handend"}, Case{"joint_Root", Side::none, "root"},
+                          Case{"LeftToe", Side::left, "toe"}, Case{"Root", Side::none, "root"}}) {
+        INFO(c.name);
+        const JointNameParts parts = split_joint_name(c.name);
+        CHECK(parts.side == c.side);
+        CHECK(parts.base == c.base);
+    }
+}
+
+TEST_CASE("body_map: Bandai names map all 21 parts", "[core]") {
+    const Skeleton skeleton = skeleton_from({{"joint_Root", nullptr}, {"Hips", "joint_Root"}, {"Spine", "Hips"}, {"Chest", "Spine"},
+        {"Neck", "Chest"}, {"Head", "Neck"}, {"Shoulder_L", "Chest"}, {"UpperArm_L", "Shoulder_L"}, {"LowerArm_L", "UpperArm_L"},
+        {"Hand_L", "LowerArm_L"}, {"Shoulder_R", "Chest"}, {"UpperArm_R", "Shoulder_R"}, {"LowerArm_R", "UpperArm_R"},
+        {"Hand_R", "LowerArm_R"}, {"UpperLeg_L", "Hips"}, {"LowerLeg_L", "UpperLeg_L"}, {"Foot_L", "LowerLeg_L"},
+        {"Toes_L", "Foot_L"}, {"UpperLeg_R", "Hips"}, {"LowerLeg_R", "UpperLeg_R"}, {"Foot_R", "LowerLeg_R"}, {"Toes_R", "Foot_R"}});
+    const auto map = named_map(skeleton);
+    CHECK(map.size() == 21);
+    CHECK(map.at("pelvis") == "Hips");
+    CHECK(map.at("clavicle_l") == "Shoulder_L");
+    CHECK(map.at("upper_arm_r") == "UpperArm_R");
+    CHECK(map.at("toe_r") == "Toes_R");
+}
+
+TEST_CASE("body_map: CMU names, with hip joints and two neck joints", "[core]") {
+    const Skeleton skeleton = skeleton_from({{"Hips", nullptr}, {"LHipJoint", "Hips"}, {"LeftUpLeg", "LHipJoint"},
+        {"LeftLeg", "LeftUpLeg"}, {"LeftFoot", "LeftLeg"}, {"LeftToeBase", "LeftFoot"}, {"RHipJoint", "Hips"},
+        {"RightUpLeg", "RHipJoint"}, {"RightLeg", "RightUpLeg"}, {"RightFoot", "RightLeg"}, {"RightToeBase", "RightFoot"},
+        {"LowerBack", "Hips"}, {"Spine", "LowerBack"}, {"Spine1", "Spine"}, {"Neck", "Spine1"}, {"Neck1", "Neck"},
+        {"Head", "Neck1"}, {"LeftShoulder", "Spine1"}, {"LeftArm", "LeftShoulder"}, {"LeftForeArm", "LeftArm"},
+        {"LeftHand", "LeftForeArm"}, {"LeftFingerBase", "LeftHand"}, {"RightShoulder", "Spine1"}, {"RightArm", "RightShoulder"},
+        {"RightForeArm", "RightArm"}, {"RightHand", "RightForeArm"}, {"RThumb", "RightHand"}});
+    const auto map = named_map(skeleton);
+    CHECK(map.size() == 21);
+    CHECK(map.at("pelvis") == "Hips");
+    CHECK(map.at("spine") == "LowerBack");
+    CHECK(map.at("chest") == "Spine1");
+    CHECK(map.at("neck") == "Neck");
+    CHECK(map.at("thigh_l") == "LeftUpLeg");
+    CHECK(map.at("clavicle_r") == "RightShoulder");
+    CHECK(map.at("hand_r") == "RightHand");
+}
+
+TEST_CASE("body_map: bvh11 names where 'Shoulder' is the upper arm and the wrist is the hand", "[core]") {
+    const Skeleton skeleton = skeleton_from({{"Hips", nullptr}, {"LeftHip", "Hips"}, {"LeftKnee", "LeftHip"},
+        {"LeftAnkle", "LeftKnee"}, {"LeftToe", "LeftAnkle"}, {"lowerback", "Hips"}, {"Chest", "lowerback"}, {"Chest2", "Chest"},
+        {"lowerneck", "Chest2"}, {"Neck", "lowerneck"}, {"Head", "Neck"}, {"LeftCollar", "Chest2"}, {"LeftShoulder", "LeftCollar"},
+        {"LeftElbow", "LeftShoulder"}, {"LeftWrist", "LeftElbow"}, {"lhand", "LeftWrist"}, {"RightCollar", "Chest2"},
+        {"RightShoulder", "RightCollar"}, {"RightElbow", "RightShoulder"}, {"RightWrist", "RightElbow"}, {"rhand", "RightWrist"},
+        {"RightHip", "Hips"}, {"RightKnee", "RightHip"}, {"RightAnkle", "RightKnee"}, {"RightToe", "RightAnkle"}});
+    const auto map = named_map(skeleton);
+    CHECK(map.size() == 21);
+    CHECK(map.at("upper_arm_l") == "LeftShoulder");
+    CHECK(map.at("clavicle_l") == "LeftCollar");
+    CHECK(map.at("hand_l") == "LeftWrist");
+    CHECK(map.at("chest") == "Chest2");
+    CHECK(map.at("toe_r") == "RightToe");
+}
+
+TEST_CASE("body_map: Mixamo, MotionBuilder and CC4 prefixes", "[core]") {
+    for (const std::string prefix : {"mixamorig:", "Character1_"}) {
+        auto n = [&](const char* name) { return prefix + name; };
+        Skeleton skeleton;
+        const std::vector<std::pair<std::string, std::string>> joints = {{n("Hips"), ""}, {n("Spine"), n("Hips")},
+            {n("Spine1"), n("Spine")}, {n("Spine2"), n("Spine1")}, {n("Neck"), n("Spine2")}, {n("Head"), n("Neck")},
+            {n("LeftShoulder"), n("Spine2")}, {n("LeftArm"), n("LeftShoulder")}, {n("LeftForeArm"), n("LeftArm")},
+            {n("LeftHand"), n("LeftForeArm")}, {n("LeftHandIndex1"), n("LeftHand")}, {n("RightShoulder"), n("Spine2")},
+            {n("RightArm"), n("RightShoulder")}, {n("RightForeArm"), n("RightArm")}, {n("RightHand"), n("RightForeArm")},
+            {n("LeftUpLeg"), n("Hips")}, {n("LeftLeg"), n("LeftUpLeg")}, {n("LeftFoot"), n("LeftLeg")},
+            {n("LeftToeBase"), n("LeftFoot")}, {n("RightUpLeg"), n("Hips")}, {n("RightLeg"), n("RightUpLeg")},
+            {n("RightFoot"), n("RightLeg")}, {n("RightToeBase"), n("RightFoot")}};
+        for (const auto& [name, parent] : joints) {
+            skeleton.names.push_back(name);
+            skeleton.parents.push_back(parent.empty() ? -1 : *skeleton.find(parent));
+            skeleton.rest_offsets.push_back(Eigen::Vector3d::Zero());
+        }
+        const auto map = named_map(skeleton);
+        INFO(prefix);
+        CHECK(map.size() == 21);
+        CHECK(map.at("chest") == n("Spine2"));
+        CHECK(map.at("hand_l") == n("LeftHand"));
+    }
+
+    const Skeleton cc4 = skeleton_from({{"CC_Base_Hip", nullptr}, {"CC_Base_Pelvis", "CC_Base_Hip"},
+        {"CC_Base_L_Thigh", "CC_Base_Pelvis"}, {"CC_Base_L_Calf", "CC_Base_L_Thigh"}, {"CC_Base_L_Foot", "CC_Base_L_Calf"},
+        {"CC_Base_L_ToeBaseShareBone", "CC_Base_L_Foot"}, {"CC_Base_L_ToeBase", "CC_Base_L_Foot"},
+        {"CC_Base_L_ThighTwist01", "CC_Base_L_Thigh"}, {"CC_Base_R_Thigh", "CC_Base_Pelvis"}, {"CC_Base_R_Calf", "CC_Base_R_Thigh"},
+        {"CC_Base_R_Foot", "CC_Base_R_Calf"}, {"CC_Base_R_ToeBase", "CC_Base_R_Foot"}, {"CC_Base_Waist", "CC_Base_Hip"},
+        {"CC_Base_Spine01", "CC_Base_Waist"}, {"CC_Base_Spine02", "CC_Base_Spine01"}, {"CC_Base_NeckTwist01", "CC_Base_Spine02"},
+        {"CC_Base_NeckTwist02", "CC_Base_NeckTwist01"}, {"CC_Base_Head", "CC_Base_NeckTwist02"},
+        {"CC_Base_L_Clavicle", "CC_Base_Spine02"}, {"CC_Base_L_Upperarm", "CC_Base_L_Clavicle"},
+        {"CC_Base_L_Forearm", "CC_Base_L_Upperarm"}, {"CC_Base_L_Hand", "CC_Base_L_Forearm"},
+        {"CC_Base_R_Clavicle", "CC_Base_Spine02"}, {"CC_Base_R_Upperarm", "CC_Base_R_Clavicle"},
+        {"CC_Base_R_Forearm", "CC_Base_R_Upperarm"}, {"CC_Base_R_Hand", "CC_Base_R_Forearm"}});
+    const auto map = named_map(cc4);
+    CHECK(map.size() == 21);
+    CHECK(map.at("pelvis") == "CC_Base_Hip"); // where legs and trunk branch
+    CHECK(map.at("spine") == "CC_Base_Waist");
+    CHECK(map.at("toe_l") == "CC_Base_L_ToeBase");
+    CHECK(map.at("thigh_l") == "CC_Base_L_Thigh");
+}
+
+TEST_CASE("body_map: a chain without human names maps nothing", "[core]") {
+    const Skeleton skeleton = skeleton_from({{"base", nullptr}, {"child1", "base"}, {"child2", "child1"}});
+    CHECK(detect_body_map(skeleton).mapped_count() == 0);
+}
+
+TEST_CASE("body_map: part names and mirroring", "[core]") {
+    CHECK(body_part_name(BodyPart::upper_arm_l) == "upper_arm_l");
+    CHECK(body_part_from_name("toe_r") == BodyPart::toe_r);
+    CHECK_FALSE(body_part_from_name("elbow").has_value());
+    CHECK(body_part_mirrored(BodyPart::hand_l) == BodyPart::hand_r);
+    CHECK(body_part_mirrored(BodyPart::shin_r) == BodyPart::shin_l);
+    CHECK(body_part_mirrored(BodyPart::head) == BodyPart::head);
+}
