@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 
@@ -58,13 +59,54 @@ public:
     // Returns false without moving when the next characters are not a number.
     bool parse_number(double& value) {
         skip_blanks();
-        const char* first = m_text.data() + m_pos;
-        const char* last = m_text.data() + m_text.size();
-        if (first < last && *first == '+') ++first;
-        const auto [end, error] = std::from_chars(first, last, value);
-        if (error != std::errc() || !std::isfinite(value)) return false;
-        if (end < last && !is_blank(*end) && *end != '\n') return false; // "1.5abc"
-        m_pos = static_cast<std::size_t>(end - m_text.data());
+        const char* const begin = m_text.data() + m_pos;
+        const char* const end = m_text.data() + m_text.size();
+        const char* p = begin;
+        const bool negative = p < end && *p == '-';
+        if (p < end && (*p == '-' || *p == '+')) ++p;
+        const char* const number_begin = p; // from_chars takes no '+', and the sign is applied here
+
+        // Fast path (Clinger): up to 19 significant digits and a power of ten that doubles hold exactly give
+        // the correctly rounded value with one multiplication or division, the same value strtod gives.
+        std::uint64_t mantissa = 0;
+        const char* const integer_begin = p;
+        while (p < end && is_digit(*p)) mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p++ - '0');
+        const std::ptrdiff_t integer_digits = p - integer_begin;
+        std::ptrdiff_t fraction_digits = 0;
+        if (p < end && *p == '.') {
+            const char* const fraction_begin = ++p;
+            while (p < end && is_digit(*p)) mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p++ - '0');
+            fraction_digits = p - fraction_begin;
+        }
+        if (integer_digits + fraction_digits == 0) return false;
+        // 19 digits always fit in 64 bits; longer numbers (overflowed mantissa) take the slow path.
+        const bool exact = integer_digits + fraction_digits <= 19;
+        long exponent = -static_cast<long>(fraction_digits);
+        if (p < end && (*p == 'e' || *p == 'E')) {
+            ++p;
+            const bool negative_exponent = p < end && *p == '-';
+            if (p < end && (*p == '-' || *p == '+')) ++p;
+            if (p >= end || !is_digit(*p)) return false;
+            long written_exponent = 0;
+            while (p < end && is_digit(*p)) {
+                if (written_exponent < 100000) written_exponent = written_exponent * 10 + (*p - '0');
+                ++p;
+            }
+            exponent += negative_exponent ? -written_exponent : written_exponent;
+        }
+        if (p < end && !is_blank(*p) && *p != '\n') return false; // "1.5abc", "1.5.5"
+
+        double magnitude = 0.0;
+        if (exact && mantissa <= (std::uint64_t(1) << 53) && exponent >= -22 && exponent <= 22) {
+            magnitude = static_cast<double>(mantissa);
+            magnitude = exponent < 0 ? magnitude / k_powers_of_ten[-exponent] : magnitude * k_powers_of_ten[exponent];
+        } else {
+            const auto [parsed_end, error] = std::from_chars(number_begin, p, magnitude);
+            if (error != std::errc() || parsed_end != p) return false;
+        }
+        if (!std::isfinite(magnitude)) return false;
+        value = negative ? -magnitude : magnitude;
+        m_pos = static_cast<std::size_t>(p - m_text.data());
         return true;
     }
 
@@ -78,6 +120,10 @@ public:
     }
 
 private:
+    static bool is_digit(char c) { return c >= '0' && c <= '9'; }
+    static constexpr double k_powers_of_ten[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                                   1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
     std::string_view m_text;
     std::size_t m_pos = 0;
     int m_line = 1;
