@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs the Debian packages kumite needs, only those missing. Safe to run again.
+#   scripts/setup.sh          build dependencies
+#   scripts/setup.sh --test   also what the tests use (Blender for the BVH import check, clang for fuzzing)
+set -euo pipefail
+
+packages=(build-essential cmake g++ libeigen3-dev nlohmann-json3-dev catch2 python3)
+if [[ "${1:-}" == "--test" ]]; then
+  packages+=(blender clang-14 libfuzzer-14-dev)
+fi
+
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+if [[ ${#missing[@]} -eq 0 ]]; then
+  echo "setup: all packages present"
+  exit 0
+fi
+
+sudo_prefix=()
+if [[ $(id -u) -ne 0 ]]; then
+  command -v sudo >/dev/null || { echo "setup: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  sudo_prefix=(sudo)
+fi
+echo "setup: installing ${missing[*]}"
+"${sudo_prefix[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo_prefix[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
