@@ -152,3 +152,43 @@ TEST_CASE("body_map: part names and mirroring", "[core]") {
     CHECK(body_part_mirrored(BodyPart::shin_r) == BodyPart::shin_l);
     CHECK(body_part_mirrored(BodyPart::head) == BodyPart::head);
 }
+
+TEST_CASE("body_map: 3ds Max Biped, Unreal and Blender/Rigify names", "[core]") {
+    const Skeleton biped = skeleton_from({{"Bip01", nullptr}, {"Bip01 Pelvis", "Bip01"}, {"Bip01 Spine", "Bip01 Pelvis"},
+        {"Bip01 Spine1", "Bip01 Spine"}, {"Bip01 Neck", "Bip01 Spine1"}, {"Bip01 Head", "Bip01 Neck"},
+        {"Bip01 L Clavicle", "Bip01 Neck"}, {"Bip01 L UpperArm", "Bip01 L Clavicle"}, {"Bip01 L Forearm", "Bip01 L UpperArm"},
+        {"Bip01 L Hand", "Bip01 L Forearm"}, {"Bip01 R Clavicle", "Bip01 Neck"}, {"Bip01 R UpperArm", "Bip01 R Clavicle"},
+        {"Bip01 R Forearm", "Bip01 R UpperArm"}, {"Bip01 R Hand", "Bip01 R Forearm"}, {"Bip01 L Thigh", "Bip01 Spine"},
+        {"Bip01 L Calf", "Bip01 L Thigh"}, {"Bip01 L Foot", "Bip01 L Calf"}, {"Bip01 L Toe0", "Bip01 L Foot"},
+        {"Bip01 R Thigh", "Bip01 Spine"}, {"Bip01 R Calf", "Bip01 R Thigh"}, {"Bip01 R Foot", "Bip01 R Calf"},
+        {"Bip01 R Toe0", "Bip01 R Foot"}});
+    const auto biped_map = named_map(biped);
+    CHECK(biped_map.at("hand_l") == "Bip01 L Hand");
+    CHECK(biped_map.at("toe_r") == "Bip01 R Toe0");
+    CHECK(biped_map.at("thigh_r") == "Bip01 R Thigh");
+    CHECK(biped_map.at("clavicle_l") == "Bip01 L Clavicle");
+
+    const Skeleton unreal = skeleton_from({{"root", nullptr}, {"pelvis", "root"}, {"spine_01", "pelvis"}, {"spine_02", "spine_01"},
+        {"spine_03", "spine_02"}, {"neck_01", "spine_03"}, {"head", "neck_01"}, {"clavicle_l", "spine_03"},
+        {"upperarm_l", "clavicle_l"}, {"lowerarm_l", "upperarm_l"}, {"lowerarm_twist_01_l", "lowerarm_l"}, {"hand_l", "lowerarm_l"},
+        {"clavicle_r", "spine_03"}, {"upperarm_r", "clavicle_r"}, {"lowerarm_r", "upperarm_r"}, {"hand_r", "lowerarm_r"},
+        {"thigh_l", "pelvis"}, {"calf_l", "thigh_l"}, {"foot_l", "calf_l"}, {"ball_l", "foot_l"}, {"thigh_r", "pelvis"},
+        {"calf_r", "thigh_r"}, {"foot_r", "calf_r"}, {"ball_r", "foot_r"}});
+    const auto unreal_map = named_map(unreal);
+    CHECK(unreal_map.size() == 21);
+    CHECK(unreal_map.at("pelvis") == "pelvis");
+    CHECK(unreal_map.at("spine") == "spine_01");
+    CHECK(unreal_map.at("chest") == "spine_03");
+    CHECK(unreal_map.at("forearm_l") == "lowerarm_l");
+    CHECK(unreal_map.at("toe_l") == "ball_l");
+
+    const Skeleton rigify = skeleton_from({{"hips", nullptr}, {"spine", "hips"}, {"chest", "spine"}, {"neck", "chest"},
+        {"head", "neck"}, {"shoulder.L", "chest"}, {"upper_arm.L", "shoulder.L"}, {"forearm.L", "upper_arm.L"}, {"hand.L", "forearm.L"},
+        {"shoulder.R", "chest"}, {"upper_arm.R", "shoulder.R"}, {"forearm.R", "upper_arm.R"}, {"hand.R", "forearm.R"},
+        {"thigh.L", "hips"}, {"shin.L", "thigh.L"}, {"foot.L", "shin.L"}, {"toe.L", "foot.L"}, {"thigh.R", "hips"},
+        {"shin.R", "thigh.R"}, {"foot.R", "shin.R"}, {"toe.R", "foot.R"}});
+    const auto rigify_map = named_map(rigify);
+    CHECK(rigify_map.size() == 21);
+    CHECK(rigify_map.at("upper_arm_r") == "upper_arm.R");
+    CHECK(rigify_map.at("shin_l") == "shin.L");
+}

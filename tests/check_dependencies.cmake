@@ -1,0 +1,30 @@
+# Enforces the one direction core <- formats <- runtime <- authoring and keeps Qt and OpenEXR out of the
+# engine-facing libraries. Run as: cmake -DSOURCE_DIR=<repo> -P check_dependencies.cmake
+# (registered as the ctest "dependencies: one direction, no Qt or OpenEXR in core/formats/runtime").
+
+set(failures "")
+function(check_folder folder forbidden_regex why)
+  file(GLOB_RECURSE sources "${SOURCE_DIR}/${folder}/*.h" "${SOURCE_DIR}/${folder}/*.cpp")
+  foreach(source IN LISTS sources)
+    file(STRINGS "${source}" includes REGEX "^[ \t]*#[ \t]*include")
+    foreach(line IN LISTS includes)
+      if(line MATCHES "${forbidden_regex}")
+        file(RELATIVE_PATH relative "${SOURCE_DIR}" "${source}")
+        set(failures "${failures}\n  ${relative}: ${line} (${why})" PARENT_SCOPE)
+      endif()
+    endforeach()
+  endforeach()
+endfunction()
+
+# Each regex lists what the folder may not include.
+check_folder(core "[<\"](Q[A-Za-z]+|Imf[A-Za-z]*|OpenEXR/|kumite/formats/|kumite/runtime/|kumite/authoring/|nlohmann/)"
+  "core uses Eigen and the standard library only")
+check_folder(formats "[<\"](Q[A-Za-z]+|kumite/runtime/|kumite/authoring/)"
+  "formats depends on core only; no Qt")
+check_folder(runtime "[<\"](Q[A-Za-z]+|Imf[A-Za-z]*|OpenEXR/|kumite/authoring/)"
+  "libkumite_runtime has no Qt and no OpenEXR")
+
+if(failures)
+  message(FATAL_ERROR "dependency rule broken:${failures}")
+endif()
+message(STATUS "dependencies: core <- formats <- runtime <- authoring respected")
