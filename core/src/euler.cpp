@@ -32,9 +32,12 @@ Eigen::Vector3d euler_from_quaternion(const Eigen::Quaterniond& rotation, EulerO
         angles[0] = std::atan2(-s * m(j, k), m(k, k));
         angles[2] = std::atan2(-s * m(i, j), m(i, i));
     } else {
-        // Gimbal lock: only a +- c is defined; put it all in a.
-        angles[0] = std::atan2(s * m(k, j), m(j, j));
-        angles[2] = 0.0;
+        // Gimbal lock: only a +- c is defined. Put it all in c (a = 0), as exporters such as iClone do:
+        // then R = Rj(b) Rk(c), and Rk(c) = Rj(b)^T R gives c from its block around axis k.
+        angles[0] = 0.0;
+        const Eigen::Matrix3d about_k = Eigen::AngleAxisd(angles[1], Eigen::Vector3d::Unit(j)).toRotationMatrix().transpose() * m;
+        const int k1 = (k + 1) % 3, k2 = (k + 2) % 3;
+        angles[2] = std::atan2(about_k(k2, k1), about_k(k1, k1));
     }
     return angles;
 }

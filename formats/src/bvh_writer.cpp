@@ -9,8 +9,7 @@
 namespace kumite {
 namespace {
 
-constexpr double k_pi = 3.14159265358979323846;
-constexpr double k_radians_to_degrees = 180.0 / k_pi;
+constexpr double k_radians_to_degrees = 180.0 / 3.14159265358979323846;
 
 void append_number(std::string& out, double value) {
     if (std::abs(value) < 1e-12) value = 0.0; // no "-0" or "1e-17" noise
@@ -18,22 +17,6 @@ void append_number(std::string& out, double value) {
     const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 10);
     assert(error == std::errc());
     out.append(buffer, end);
-}
-
-double wrap_near(double angle, double reference) {
-    return angle - 2.0 * k_pi * std::round((angle - reference) / (2.0 * k_pi));
-}
-
-// Of the two Euler triples for one rotation, the one closest to the previous frame's, each angle unwrapped.
-Eigen::Vector3d continuous_euler(const Eigen::Quaterniond& rotation, EulerOrder order, const Eigen::Vector3d& previous) {
-    const Eigen::Vector3d a = euler_from_quaternion(rotation, order);
-    const Eigen::Vector3d b(a[0] + k_pi, k_pi - a[1], a[2] + k_pi);
-    Eigen::Vector3d best_a, best_b;
-    for (int i = 0; i < 3; ++i) {
-        best_a[i] = wrap_near(a[i], previous[i]);
-        best_b[i] = wrap_near(b[i], previous[i]);
-    }
-    return (best_a - previous).squaredNorm() <= (best_b - previous).squaredNorm() ? best_a : best_b;
 }
 
 void write_hierarchy(std::string& out, const Skeleton& skeleton, const BvhLayout& layout, double to_unit) {
@@ -109,7 +92,6 @@ std::string bvh_write_string(const Clip& clip, const BvhLayout& layout, const Le
     append_number(out, clip.frame_time_s);
     out += '\n';
 
-    std::vector<Eigen::Vector3d> previous_angles(skeleton.joint_count(), Eigen::Vector3d::Zero());
     for (int frame = 0; frame < clip.frame_count(); ++frame) {
         const PoseView pose = clip.pose(frame);
         bool first_value = true;
@@ -118,11 +100,9 @@ std::string bvh_write_string(const Clip& clip, const BvhLayout& layout, const Le
             const Eigen::Vector3d translation = joint == 0 ? pose.root_translation
                                                 : clip.has_local_translations() ? pose.local_translations[joint]
                                                                                 : skeleton.rest_offsets[joint];
-            Eigen::Vector3d angles = Eigen::Vector3d::Zero();
-            if (channels.has_rotation()) {
-                angles = continuous_euler(pose.local_rotations[joint], channels.rotation_order, previous_angles[joint]);
-                previous_angles[joint] = angles;
-            }
+            const Eigen::Vector3d angles = channels.has_rotation()
+                                               ? euler_from_quaternion(pose.local_rotations[joint], channels.rotation_order)
+                                               : Eigen::Vector3d::Zero();
             for (int i = 0; i < channels.count; ++i) {
                 if (!first_value) out += ' ';
                 first_value = false;

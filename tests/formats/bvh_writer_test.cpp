@@ -61,16 +61,18 @@ TEST_CASE("bvh_writer: round trip keeps layout and positions on a synthetic clip
     check_round_trip(*file, "synthetic.bvh");
 }
 
-TEST_CASE("bvh_writer: Euler angles stay continuous across frames", "[formats]") {
+TEST_CASE("bvh_writer: canonical angles are written as they were read", "[formats]") {
+    // Canonical triples (middle angle within +-90, others within +-180) come back unchanged; a gimbal-locked
+    // triple keeps its first angle at zero; a non-canonical one is written as its canonical twin.
     const std::string text =
         "HIERARCHY\nROOT r\n{\n OFFSET 0 0 0\n CHANNELS 3 Zrotation Xrotation Yrotation\n}\n"
-        "MOTION\nFrames: 3\nFrame Time: 0.1\n170 0 0\n179 0 0\n-172 0 0\n";
+        "MOTION\nFrames: 4\nFrame Time: 0.1\n109.754 85.5453 -109.015\n179 10 -179\n0 -90 179.5\n-70 94 70\n";
     BvhReadOptions options;
     options.unit = LengthUnit{"cm", 0.01};
     Result<BvhFile> file = bvh_parse(text, "spin.bvh", options);
     REQUIRE(file.has_value());
     const std::string written = bvh_write_string(file->clip, file->layout, file->unit);
-    CHECK_THAT(written, Catch::Contains("\n170 0 0\n179 0 0\n188 0 0\n"));
+    CHECK_THAT(written, Catch::Contains("\n109.754 85.5453 -109.015\n179 10 -179\n0 -90 179.5\n110 86 -110\n"));
 }
 
 TEST_CASE("bvh_writer: a default layout writes any clip", "[formats]") {

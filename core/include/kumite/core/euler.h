@@ -19,8 +19,8 @@ struct EulerOrder {
 
 Eigen::Quaterniond quaternion_from_euler(const Eigen::Vector3d& angles_rad, EulerOrder order);
 
-// The angles that give this rotation in this order; the middle angle is in [-pi/2, pi/2]. At gimbal lock the
-// third angle is set to zero.
+// The canonical angles that give this rotation in this order, as exporters write them: the middle angle in
+// [-pi/2, pi/2], the others in [-pi, pi]. At gimbal lock (middle angle +-pi/2) the first angle is zero.
 Eigen::Vector3d euler_from_quaternion(const Eigen::Quaterniond& rotation, EulerOrder order);
 
 } // namespace kumite

@@ -1,8 +1,9 @@
 #pragma once
 // BVH writer: a Clip (metres) and its channel layout back to BVH text in a chosen length unit. The hierarchy,
-// names, channel order and rotation orders are the layout's; rotations are written as Euler angles in each
-// joint's order, kept continuous from frame to frame. Numbers carry 10 significant digits, enough for positions
-// to agree with the clip to far better than a micrometre.
+// names, channel order and rotation orders are the layout's; rotations are written as each joint's canonical
+// Euler angles (euler_from_quaternion: middle angle within +-90 degrees, the others within +-180), the convention
+// exporters use, so a capture read and written back keeps its numbers except where its exporter chose the other
+// equivalent triple. Numbers carry 10 significant digits: positions agree with the clip far below a micrometre.
 
 #include "kumite/core/clip.h"
 #include "kumite/core/result.h"
