@@ -1,6 +1,9 @@
 #include "bvh_raw.h"
 
 #include <cmath>
+#include <optional>
+#include <system_error>
+#include <thread>
 
 namespace kumite {
 namespace {
@@ -58,56 +61,43 @@ Eigen::Vector3d translation_from_values(const double* values, const JointSlots& 
     return translation;
 }
 
-} // namespace
-
-Result<void> bvh_parse_frames(TextCursor& cursor, std::string_view source, const RawBvh& raw, Clip& clip) {
-    const Skeleton& skeleton = raw.skeleton;
-    const int joints = skeleton.joint_count();
-    const int values_per_frame = raw.layout.channel_count();
-    const std::size_t frames = static_cast<std::size_t>(raw.frame_count);
-    auto where = [&] { return std::string(source) + ":" + std::to_string(cursor.line()) + ": "; };
-
-    // Bound memory by the input: every value needs at least two bytes, and the clip stores one rotation per joint
-    // per frame, so refuse frame counts the remaining bytes cannot hold.
-    const std::size_t bytes = cursor.remaining_bytes();
-    if ((values_per_frame > 0 && frames * values_per_frame > bytes / 2 + 1) ||
-        frames * static_cast<std::size_t>(joints) > bytes + 100000) {
-        return make_error(ErrorCode::parse, where() + "'Frames: " + std::to_string(frames) + "' needs " +
-                                                std::to_string(frames * values_per_frame) + " values but only " +
-                                                std::to_string(bytes) + " bytes follow; the file is truncated or the frame count is wrong");
-    }
-    if (values_per_frame == 0 && frames > 0) {
-        return make_error(ErrorCode::unsupported, where() + "the hierarchy has no channels, so frames cannot be read");
-    }
-
-    const std::vector<JointSlots> slots = joint_slots(raw.layout);
+struct FrameDecoder {
+    const Skeleton& skeleton;
+    std::vector<JointSlots> slots;
     bool animated_translations = false;
-    for (int joint = 1; joint < joints; ++joint) animated_translations |= slots[joint].has_position;
+    int values_per_frame = 0;
+    std::size_t frames = 0;
+    std::string_view source;
 
-    clip.root_translations.resize(frames);
-    clip.local_rotations.resize(frames * joints);
-    if (animated_translations) clip.local_translations.resize(frames * joints);
+    std::string where(const TextCursor& cursor) const {
+        return std::string(source) + ":" + std::to_string(cursor.line()) + ": ";
+    }
+    Result<void> parse_range(TextCursor& cursor, std::size_t first_frame, std::size_t end_frame, Clip& clip) const;
+};
 
+// Parses frames [first_frame, end_frame), one per non-blank line, into the clip's preallocated arrays.
+Result<void> FrameDecoder::parse_range(TextCursor& cursor, std::size_t first_frame, std::size_t end_frame, Clip& clip) const {
+    const int joints = skeleton.joint_count();
     std::vector<double> values(values_per_frame);
-    for (std::size_t frame = 0; frame < frames; ++frame) {
+    for (std::size_t frame = first_frame; frame < end_frame; ++frame) {
         cursor.skip_whitespace();
         if (cursor.at_end()) {
-            return make_error(ErrorCode::parse, where() + "the file ends after " + std::to_string(frame) +
+            return make_error(ErrorCode::parse, where(cursor) + "the file ends after " + std::to_string(frame) +
                                                     " frames, but 'Frames:' declares " + std::to_string(frames));
         }
         for (int i = 0; i < values_per_frame; ++i) {
             if (cursor.parse_number(values[i])) continue;
             if (cursor.at_line_end()) {
-                return make_error(ErrorCode::parse, where() + "frame " + std::to_string(frame) + " has " + std::to_string(i) +
+                return make_error(ErrorCode::parse, where(cursor) + "frame " + std::to_string(frame) + " has " + std::to_string(i) +
                                                         " values, expected " + std::to_string(values_per_frame) + " (the channels of " +
                                                         std::to_string(joints) + " joints)");
             }
-            return make_error(ErrorCode::parse, where() + "frame " + std::to_string(frame) + ", value " + std::to_string(i + 1) +
+            return make_error(ErrorCode::parse, where(cursor) + "frame " + std::to_string(frame) + ", value " + std::to_string(i + 1) +
                                                     ": expected a finite number, found " + cursor.peek_for_message());
         }
         cursor.skip_blanks();
         if (!cursor.at_line_end()) {
-            return make_error(ErrorCode::parse, where() + "frame " + std::to_string(frame) + " has more than " +
+            return make_error(ErrorCode::parse, where(cursor) + "frame " + std::to_string(frame) + " has more than " +
                                                     std::to_string(values_per_frame) + " values (the channels of " +
                                                     std::to_string(joints) + " joints), found " + cursor.peek_for_message());
         }
@@ -122,9 +112,85 @@ Result<void> bvh_parse_frames(TextCursor& cursor, std::string_view source, const
         }
         clip.root_translations[frame] = translation_from_values(values.data(), slots[0], skeleton.rest_offsets[0]);
     }
+    return {};
+}
+
+// Where a second thread can start: the line start nearest the middle of the frame text, with the frame index
+// and line number there. Frames are non-blank lines, so counting them needs one pass over line starts.
+struct FrameSplit {
+    std::size_t offset = 0;
+    std::size_t frame = 0;
+    int line = 0;
+};
+
+std::optional<FrameSplit> find_frame_split(const TextCursor& cursor, std::size_t frames) {
+    const std::string_view text = cursor.text();
+    const std::size_t middle = text.find('\n', cursor.offset() + cursor.remaining_bytes() / 2);
+    if (middle == std::string_view::npos) return std::nullopt;
+    FrameSplit split{middle + 1, 0, cursor.line()};
+    for (std::size_t line_start = cursor.offset(); line_start < split.offset;) {
+        const std::size_t line_end = text.find('\n', line_start);
+        bool blank = true;
+        for (std::size_t i = line_start; i < line_end && blank; ++i) blank = TextCursor::is_blank(text[i]);
+        if (!blank) ++split.frame;
+        ++split.line;
+        line_start = line_end + 1;
+    }
+    if (split.frame == 0 || split.frame >= frames) return std::nullopt;
+    return split;
+}
+
+} // namespace
+
+Result<void> bvh_parse_frames(TextCursor& cursor, std::string_view source, const RawBvh& raw, Clip& clip, int threads) {
+    const Skeleton& skeleton = raw.skeleton;
+    const int joints = skeleton.joint_count();
+    FrameDecoder decoder{skeleton, joint_slots(raw.layout), false, raw.layout.channel_count(),
+                         static_cast<std::size_t>(raw.frame_count), source};
+    const std::size_t frames = decoder.frames;
+    const int values_per_frame = decoder.values_per_frame;
+
+    // Bound memory by the input: every value needs at least two bytes, and the clip stores one rotation per joint
+    // per frame, so refuse frame counts the remaining bytes cannot hold.
+    const std::size_t bytes = cursor.remaining_bytes();
+    if ((values_per_frame > 0 && frames * values_per_frame > bytes / 2 + 1) ||
+        frames * static_cast<std::size_t>(joints) > bytes + 100000) {
+        return make_error(ErrorCode::parse, decoder.where(cursor) + "'Frames: " + std::to_string(frames) + "' needs " +
+                                                std::to_string(frames * values_per_frame) + " values but only " +
+                                                std::to_string(bytes) + " bytes follow; the file is truncated or the frame count is wrong");
+    }
+    if (values_per_frame == 0 && frames > 0) {
+        return make_error(ErrorCode::unsupported, decoder.where(cursor) + "the hierarchy has no channels, so frames cannot be read");
+    }
+
+    for (int joint = 1; joint < joints; ++joint) decoder.animated_translations |= decoder.slots[joint].has_position;
+    clip.root_translations.resize(frames);
+    clip.local_rotations.resize(frames * joints);
+    if (decoder.animated_translations) clip.local_translations.resize(frames * joints);
+
+    // Large captures are parsed in two halves at once; the halves write disjoint frames of the clip.
+    std::optional<FrameSplit> split;
+    if (threads >= 2 && bytes >= k_bvh_parallel_min_bytes) split = find_frame_split(cursor, frames);
+    if (split) {
+        TextCursor second_cursor = cursor.at(split->offset, split->line);
+        Result<void> second_result;
+        try {
+            std::thread second([&] { second_result = decoder.parse_range(second_cursor, split->frame, frames, clip); });
+            Result<void> first_result = decoder.parse_range(cursor, 0, split->frame, clip);
+            second.join();
+            if (!first_result) return first_result; // the earlier error in file order
+            if (!second_result) return second_result;
+            cursor = second_cursor;
+        } catch (const std::system_error&) {
+            split.reset(); // no thread to be had: parse serially below
+        }
+    }
+    if (!split) {
+        if (Result<void> parsed = decoder.parse_range(cursor, 0, frames, clip); !parsed) return parsed;
+    }
     cursor.skip_whitespace();
     if (!cursor.at_end()) {
-        return make_error(ErrorCode::parse, where() + "more data after the " + std::to_string(frames) +
+        return make_error(ErrorCode::parse, decoder.where(cursor) + "more data after the " + std::to_string(frames) +
                                                 " frames that 'Frames:' declares, found " + cursor.peek_for_message());
     }
     return {};

@@ -13,8 +13,12 @@ struct RawBvh {
     int frame_count = 0;
 };
 
+// Frame text at least this large is parsed by two threads when allowed.
+inline constexpr std::size_t k_bvh_parallel_min_bytes = 256 * 1024;
+
 // Parses raw.frame_count frames (one per line, raw.layout.channel_count() values each) into clip's per-frame
-// arrays, in file units. The cursor stands after "Frame Time: t".
-Result<void> bvh_parse_frames(TextCursor& cursor, std::string_view source, const RawBvh& raw, Clip& clip);
+// arrays, in file units. The cursor stands after "Frame Time: t". With threads >= 2, large frame text is split
+// at a line near its middle and both halves are parsed at once.
+Result<void> bvh_parse_frames(TextCursor& cursor, std::string_view source, const RawBvh& raw, Clip& clip, int threads);
 
 } // namespace kumite

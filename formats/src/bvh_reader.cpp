@@ -8,6 +8,7 @@
 #include <cctype>
 #include <fstream>
 #include <system_error>
+#include <thread>
 
 namespace kumite {
 namespace {
@@ -214,7 +215,8 @@ Result<BvhFile> bvh_parse(std::string_view text, std::string_view source_name, c
     if (Result<void> parsed = parse_motion_header(cursor, source_name, raw); !parsed) return parsed.error();
 
     BvhFile file;
-    if (Result<void> parsed = bvh_parse_frames(cursor, source_name, raw, file.clip); !parsed) return parsed.error();
+    const int threads = options.threads > 0 ? options.threads : static_cast<int>(std::min(2u, std::thread::hardware_concurrency()));
+    if (Result<void> parsed = bvh_parse_frames(cursor, source_name, raw, file.clip, threads); !parsed) return parsed.error();
     file.clip.skeleton = std::move(raw.skeleton);
     file.clip.frame_time_s = raw.frame_time_s;
     file.layout = std::move(raw.layout);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <string_view>
 
@@ -15,6 +16,15 @@ class TextCursor {
 public:
     explicit TextCursor(std::string_view text) : m_text(text) {}
 
+    // A cursor on the same text at a given offset, which must start line `line`.
+    TextCursor at(std::size_t offset, int line) const {
+        TextCursor cursor(m_text);
+        cursor.m_pos = offset;
+        cursor.m_line = line;
+        return cursor;
+    }
+
+    std::string_view text() const { return m_text; }
     int line() const { return m_line; }
     std::size_t offset() const { return m_pos; }
     bool at_end() const { return m_pos >= m_text.size(); }
@@ -70,12 +80,12 @@ public:
         // the correctly rounded value with one multiplication or division, the same value strtod gives.
         std::uint64_t mantissa = 0;
         const char* const integer_begin = p;
-        while (p < end && is_digit(*p)) mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p++ - '0');
+        p = accumulate_digits(p, end, mantissa);
         const std::ptrdiff_t integer_digits = p - integer_begin;
         std::ptrdiff_t fraction_digits = 0;
         if (p < end && *p == '.') {
             const char* const fraction_begin = ++p;
-            while (p < end && is_digit(*p)) mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p++ - '0');
+            p = accumulate_digits(p, end, mantissa);
             fraction_digits = p - fraction_begin;
         }
         if (integer_digits + fraction_digits == 0) return false;
@@ -121,6 +131,26 @@ public:
 
 private:
     static bool is_digit(char c) { return c >= '0' && c <= '9'; }
+
+    // mantissa = mantissa * 10^n + the n decimal digits at p; returns the end of the digits. Four digits at a
+    // time where it can (SWAR: one 32-bit load, a digit test and two multiplications), then one by one.
+    // The value may wrap past 19 digits; callers count digits and fall back then.
+    static const char* accumulate_digits(const char* p, const char* end, std::uint64_t& mantissa) {
+        while (end - p >= 4) {
+            std::uint32_t chunk;
+            std::memcpy(&chunk, p, 4);
+            const std::uint32_t high_nibbles = chunk & 0xF0F0F0F0u;
+            const std::uint32_t overflow = ((chunk + 0x06060606u) & 0xF0F0F0F0u);
+            if (high_nibbles != 0x30303030u || overflow != 0x30303030u) break; // not four '0'..'9'
+            chunk -= 0x30303030u;
+            chunk = (chunk * 10 + (chunk >> 8)) & 0x00FF00FFu; // two-digit pairs, little endian
+            const std::uint32_t four = (chunk & 0xFFu) * 100 + (chunk >> 16);
+            mantissa = mantissa * 10000 + four;
+            p += 4;
+        }
+        while (p < end && is_digit(*p)) mantissa = mantissa * 10 + static_cast<std::uint64_t>(*p++ - '0');
+        return p;
+    }
     static constexpr double k_powers_of_ten[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
                                                    1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
 

@@ -1,5 +1,6 @@
-// BVH parse throughput: bvh_parse on in-memory text, against a naive baseline measured in the same run
-// (every whitespace token of the file through std::istringstream >> double, as simple readers do).
+// BVH parse throughput: bvh_parse on in-memory text, by default (two threads on large files) and serial, against a
+// naive baseline measured in the same run (every whitespace token through std::istringstream >> double, as simple
+// readers do).
 //
 // usage: bvh_parse_bench [FILE.bvh ...] [--repeats N]
 //        default file: the largest .bvh under $KUMITE_MOCAP_ROOT or data/mocap.
@@ -15,6 +16,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -95,23 +97,33 @@ int main(int argc, char** argv) {
         const double megabytes = text.size() / 1e6;
 
         volatile int frames = 0;
-        const Stats parse = time_runs(repeats, [&] {
-            kumite::Result<kumite::BvhFile> file = kumite::bvh_parse(text, files[f].string());
-            if (!file) {
-                std::cerr << file.error().message << "\n";
-                std::exit(1);
-            }
-            frames = file->clip.frame_count();
-        });
+        auto parse_with = [&](int threads) {
+            kumite::BvhReadOptions options;
+            options.threads = threads;
+            return time_runs(repeats, [&] {
+                kumite::Result<kumite::BvhFile> file = kumite::bvh_parse(text, files[f].string(), options);
+                if (!file) {
+                    std::cerr << file.error().message << "\n";
+                    std::exit(1);
+                }
+                frames = file->clip.frame_count();
+            });
+        };
+        const Stats parse = parse_with(0);  // the default: two threads on large files when the machine has two cores
+        const Stats serial = parse_with(1); // one thread
         volatile double sink = 0.0;
         const Stats naive = time_runs(std::max(3, repeats / 5), [&] { sink = naive_parse(text); });
+        auto throughput = [&](double ms) { return megabytes / (ms / 1000.0); };
 
         std::cout << (f ? ", " : "") << "{\"file\": \"" << files[f].string() << "\", \"bytes\": " << text.size()
-                  << ", \"frames\": " << frames << ", \"parse_ms\": {\"median\": " << parse.median_ms << ", \"p99\": " << parse.p99_ms
-                  << "}, \"throughput_mb_s\": {\"median\": " << megabytes / (parse.median_ms / 1000.0)
-                  << ", \"p99\": " << megabytes / (parse.p99_ms / 1000.0) << "}, \"baseline\": {\"name\": \"istringstream tokens\", "
-                  << "\"median_ms\": " << naive.median_ms << ", \"throughput_mb_s\": " << megabytes / (naive.median_ms / 1000.0)
-                  << "}, \"speedup_vs_baseline\": " << naive.median_ms / parse.median_ms << "}";
+                  << ", \"frames\": " << frames << ", \"threads\": " << std::min(2u, std::thread::hardware_concurrency())
+                  << ", \"parse_ms\": {\"median\": " << parse.median_ms << ", \"p99\": " << parse.p99_ms
+                  << "}, \"throughput_mb_s\": {\"median\": " << throughput(parse.median_ms) << ", \"p99\": " << throughput(parse.p99_ms)
+                  << "}, \"serial\": {\"parse_ms\": {\"median\": " << serial.median_ms << ", \"p99\": " << serial.p99_ms
+                  << "}, \"throughput_mb_s\": {\"median\": " << throughput(serial.median_ms) << ", \"p99\": " << throughput(serial.p99_ms)
+                  << "}}, \"baseline\": {\"name\": \"istringstream tokens\", \"median_ms\": " << naive.median_ms
+                  << ", \"throughput_mb_s\": " << throughput(naive.median_ms) << "}, \"speedup_vs_baseline\": " << naive.median_ms / parse.median_ms
+                  << "}";
     }
     std::cout << "]}\n";
     return 0;

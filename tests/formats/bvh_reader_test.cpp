@@ -144,3 +144,55 @@ TEST_CASE("bvh_reader: a hierarchy with zero frames is a skeleton", "[formats]")
     REQUIRE(file.has_value());
     CHECK(file->clip.frame_count() == 0);
 }
+
+TEST_CASE("bvh_reader: large files parse the same with two threads, errors included", "[formats]") {
+    // ~400 KB of frames with blank lines scattered, so the split lands among them.
+    std::string text = "HIERARCHY\nROOT hips\n{\n OFFSET 0 0 0\n CHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n"
+                       " JOINT chest\n {\n  OFFSET 0 50 0\n  CHANNELS 3 Xrotation Yrotation Zrotation\n }\n}\n"
+                       "MOTION\nFrames: 4000\nFrame Time: 0.008333\n";
+    const int header_lines = 14;
+    std::vector<int> frame_lines;
+    int line = header_lines;
+    for (int frame = 0; frame < 4000; ++frame) {
+        if (frame % 97 == 0) {
+            text += "\r\n";
+            ++line;
+        }
+        char buffer[160];
+        std::snprintf(buffer, sizeof buffer, "%.6f 90.123456 %.6f %.6f -12.345678 %.6f 1.5 %.6f -0.25\n", frame * 0.001,
+                      frame * -0.002, frame * 0.09, frame * 0.07, frame * 0.05);
+        text += buffer;
+        frame_lines.push_back(++line);
+    }
+    BvhReadOptions serial = in_cm(), parallel = in_cm();
+    serial.threads = 1;
+    parallel.threads = 2;
+    Result<BvhFile> a = bvh_parse(text, "big.bvh", serial);
+    Result<BvhFile> b = bvh_parse(text, "big.bvh", parallel);
+    REQUIRE(a.has_value());
+    REQUIRE(b.has_value());
+    REQUIRE(b->clip.frame_count() == 4000);
+    for (int frame = 0; frame < 4000; ++frame) {
+        CHECK(a->clip.root_translations[frame] == b->clip.root_translations[frame]);
+        CHECK(a->clip.local_rotations[2 * frame + 1].coeffs() == b->clip.local_rotations[2 * frame + 1].coeffs());
+    }
+
+    // One bad value early and one late: both modes report the same line, the earliest in the file.
+    for (int bad_frame : {10, 3990}) {
+        std::string broken = text;
+        size_t position = 0;
+        for (int i = 0; i <= bad_frame; ++i) position = broken.find("-12.345678", position + 1);
+        broken.replace(position, 10, "-12.34567x");
+        Result<BvhFile> serial_error = bvh_parse(broken, "big.bvh", serial);
+        Result<BvhFile> parallel_error = bvh_parse(broken, "big.bvh", parallel);
+        REQUIRE_FALSE(serial_error.has_value());
+        REQUIRE_FALSE(parallel_error.has_value());
+        CHECK(serial_error.error().message == parallel_error.error().message);
+        CHECK_THAT(parallel_error.error().message, Catch::Contains("big.bvh:" + std::to_string(frame_lines[bad_frame]) + ":"));
+    }
+    std::string truncated = text.substr(0, text.size() - 200);
+    Result<BvhFile> short_serial = bvh_parse(truncated, "big.bvh", serial);
+    Result<BvhFile> short_parallel = bvh_parse(truncated, "big.bvh", parallel);
+    REQUIRE_FALSE(short_parallel.has_value());
+    CHECK(short_serial.error().message == short_parallel.error().message);
+}

@@ -43,6 +43,7 @@ struct BvhLayout {
 struct BvhReadOptions {
     std::optional<LengthUnit> unit;                 // none: detect from the standing height
     std::size_t max_file_bytes = std::size_t(1) << 30;
+    int threads = 0; // frame parsing threads for large files: 0 = up to 2 when the machine has them, 1 = serial
 };
 
 struct BvhFile {
