@@ -1,0 +1,21 @@
+# Installs the build tree into a temporary prefix, builds tests/package against it and runs the consumer.
+# cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -P check_package.cmake
+file(REMOVE_RECURSE "${WORK_DIR}")
+execute_process(COMMAND ${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${WORK_DIR}/prefix" RESULT_VARIABLE status OUTPUT_QUIET)
+if(status)
+  message(FATAL_ERROR "install failed")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/package" -B "${WORK_DIR}/build"
+  -DCMAKE_PREFIX_PATH=${WORK_DIR}/prefix RESULT_VARIABLE status)
+if(status)
+  message(FATAL_ERROR "find_package(kumite) failed")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} --build "${WORK_DIR}/build" RESULT_VARIABLE status)
+if(status)
+  message(FATAL_ERROR "the consumer does not build against the installed package")
+endif()
+file(WRITE "${WORK_DIR}/two.bvh" "HIERARCHY\nROOT a\n{\nOFFSET 0 0 0\nCHANNELS 3 Zrotation Xrotation Yrotation\nJOINT b\n{\nOFFSET 0 1 0\nCHANNELS 0\n}\n}\nMOTION\nFrames: 1\nFrame Time: 0.1\n0 0 0\n")
+execute_process(COMMAND "${WORK_DIR}/build/consumer" "${WORK_DIR}/two.bvh" RESULT_VARIABLE status)
+if(status)
+  message(FATAL_ERROR "the consumer failed to read a capture")
+endif()
