@@ -20,32 +20,47 @@ std::vector<Eigen::Vector3d> pose_points(const Skeleton& skeleton, const PoseVie
     return points;
 }
 
+// [joint] true when the joint is `top` or below it; one pass, since parents come before children.
+std::vector<bool> subtree_of(const Skeleton& skeleton, int top) {
+    std::vector<bool> below(skeleton.joint_count(), false);
+    if (top < 0) return below;
+    for (int joint = top; joint < skeleton.joint_count(); ++joint) {
+        below[joint] = joint == top || (skeleton.parents[joint] >= 0 && below[skeleton.parents[joint]]);
+    }
+    return below;
+}
+
+// The head and feet subtrees, found once per skeleton and reused for every measured pose.
+struct BodyRegions {
+    int head = -1;
+    std::vector<bool> head_subtree;
+    std::vector<bool> feet_subtree;
+
+    BodyRegions(const Skeleton& skeleton, const BodyMap& map)
+        : head(map.joint(BodyPart::head)), head_subtree(subtree_of(skeleton, head)),
+          feet_subtree(subtree_of(skeleton, map.joint(BodyPart::foot_l))) {
+        const std::vector<bool> right = subtree_of(skeleton, map.joint(BodyPart::foot_r));
+        for (size_t joint = 0; joint < right.size(); ++joint) feet_subtree[joint] = feet_subtree[joint] || right[joint];
+    }
+};
+
 // Head top: the highest of the head joint and the End Sites below it.
-double head_top_y(const Skeleton& skeleton, const BodyMap& map, const std::vector<Eigen::Vector3d>& points) {
-    const int head = map.joint(BodyPart::head);
-    double top = points[head].y();
+double head_top_y(const Skeleton& skeleton, const BodyRegions& regions, const std::vector<Eigen::Vector3d>& points) {
+    double top = points[regions.head].y();
     for (size_t i = 0; i < skeleton.end_sites.size(); ++i) {
-        if (skeleton.is_ancestor(head, skeleton.end_sites[i].joint)) {
-            top = std::max(top, points[skeleton.joint_count() + i].y());
-        }
+        if (regions.head_subtree[skeleton.end_sites[i].joint]) top = std::max(top, points[skeleton.joint_count() + i].y());
     }
     return top;
 }
 
 // Lowest point of the feet: foot and toe joints and the End Sites below them.
-double foot_bottom_y(const Skeleton& skeleton, const BodyMap& map, const std::vector<Eigen::Vector3d>& points) {
+double foot_bottom_y(const Skeleton& skeleton, const BodyRegions& regions, const std::vector<Eigen::Vector3d>& points) {
     double bottom = std::numeric_limits<double>::infinity();
-    for (BodyPart foot_part : {BodyPart::foot_l, BodyPart::foot_r}) {
-        const int foot = map.joint(foot_part);
-        if (foot < 0) continue;
-        for (int joint = 0; joint < skeleton.joint_count(); ++joint) {
-            if (skeleton.is_ancestor(foot, joint)) bottom = std::min(bottom, points[joint].y());
-        }
-        for (size_t i = 0; i < skeleton.end_sites.size(); ++i) {
-            if (skeleton.is_ancestor(foot, skeleton.end_sites[i].joint)) {
-                bottom = std::min(bottom, points[skeleton.joint_count() + i].y());
-            }
-        }
+    for (int joint = 0; joint < skeleton.joint_count(); ++joint) {
+        if (regions.feet_subtree[joint]) bottom = std::min(bottom, points[joint].y());
+    }
+    for (size_t i = 0; i < skeleton.end_sites.size(); ++i) {
+        if (regions.feet_subtree[skeleton.end_sites[i].joint]) bottom = std::min(bottom, points[skeleton.joint_count() + i].y());
     }
     return bottom;
 }
@@ -59,7 +74,7 @@ double median(std::vector<double> values) {
 // Bone lengths along foot -> knee -> hip and pelvis -> ... -> head top, plus the two short vertical pieces
 // that bone lengths cannot give (ankle above the sole, hip joints below the pelvis), taken as medians over
 // frames. Bone lengths do not depend on the pose, so every clip of one skeleton gets nearly the same height.
-double chain_height(const Clip& clip, const BodyMap& map) {
+double chain_height(const Clip& clip, const BodyMap& map, const BodyRegions& regions) {
     const Skeleton& skeleton = clip.skeleton;
     double leg = 0.0;
     for (auto [shin, foot] : {std::pair{BodyPart::shin_l, BodyPart::foot_l}, std::pair{BodyPart::shin_r, BodyPart::foot_r}}) {
@@ -82,7 +97,7 @@ double chain_height(const Clip& clip, const BodyMap& map) {
     std::vector<double> ankle_heights, hip_drops;
     for (int frame = 0; frame < clip.frame_count(); frame += stride) {
         const std::vector<Eigen::Vector3d> points = pose_points(skeleton, clip.pose(frame));
-        const double sole = foot_bottom_y(skeleton, map, points);
+        const double sole = foot_bottom_y(skeleton, regions, points);
         double ankle = std::numeric_limits<double>::infinity();
         double hip = -std::numeric_limits<double>::infinity();
         for (auto [thigh, foot] : {std::pair{BodyPart::thigh_l, BodyPart::foot_l}, std::pair{BodyPart::thigh_r, BodyPart::foot_r}}) {
@@ -122,11 +137,12 @@ StandingHeight standing_height(const Clip& clip, const BodyMap& body_map) {
         }
         return {(high - low).maxCoeff(), StandingHeight::Method::rest_pose_extent};
     }
+    const BodyRegions regions(skeleton, body_map);
     if (is_upright(body_map, rest_points) || clip.frame_count() == 0) {
-        return {head_top_y(skeleton, body_map, rest_points) - foot_bottom_y(skeleton, body_map, rest_points),
+        return {head_top_y(skeleton, regions, rest_points) - foot_bottom_y(skeleton, regions, rest_points),
                 StandingHeight::Method::rest_pose};
     }
-    return {chain_height(clip, body_map), StandingHeight::Method::chain_lengths};
+    return {chain_height(clip, body_map, regions), StandingHeight::Method::chain_lengths};
 }
 
 } // namespace kumite

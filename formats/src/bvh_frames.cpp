@@ -150,14 +150,19 @@ Result<void> bvh_parse_frames(TextCursor& cursor, std::string_view source, const
     const std::size_t frames = decoder.frames;
     const int values_per_frame = decoder.values_per_frame;
 
-    // Bound memory by the input: every value needs at least two bytes, and the clip stores one rotation per joint
-    // per frame, so refuse frame counts the remaining bytes cannot hold.
+    // Bound memory by the input: every value needs at least two bytes ("0" and a separator), so refuse frame
+    // counts the remaining bytes cannot hold before allocating anything; joints without channels cost memory
+    // but no bytes, so their product with the frames has a fixed cap.
     const std::size_t bytes = cursor.remaining_bytes();
-    if ((values_per_frame > 0 && frames * values_per_frame > bytes / 2 + 1) ||
-        frames * static_cast<std::size_t>(joints) > bytes + 100000) {
+    if (values_per_frame > 0 && frames * values_per_frame > bytes / 2 + 1) {
         return make_error(ErrorCode::parse, decoder.where(cursor) + "'Frames: " + std::to_string(frames) + "' needs " +
-                                                std::to_string(frames * values_per_frame) + " values but only " +
-                                                std::to_string(bytes) + " bytes follow; the file is truncated or the frame count is wrong");
+                                                std::to_string(frames * values_per_frame) + " values, more than the " +
+                                                std::to_string(bytes) + " bytes that follow can hold; the file is truncated or the frame count is wrong");
+    }
+    if (frames * static_cast<std::size_t>(joints) > k_bvh_max_joint_frames) {
+        return make_error(ErrorCode::limit, decoder.where(cursor) + std::to_string(frames) + " frames of " + std::to_string(joints) +
+                                                " joints exceed the reader's limit of " + std::to_string(k_bvh_max_joint_frames) +
+                                                " joint-frames; split the capture");
     }
     if (values_per_frame == 0 && frames > 0) {
         return make_error(ErrorCode::unsupported, decoder.where(cursor) + "the hierarchy has no channels, so frames cannot be read");

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <fstream>
 #include <system_error>
 #include <thread>
@@ -17,6 +18,12 @@ bool equals_ignore_case(std::string_view a, std::string_view b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
                return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
            });
+}
+
+std::string format_number(double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.10g", value);
+    return buffer;
 }
 
 std::optional<BvhChannel> channel_from_name(std::string_view name) {
@@ -58,8 +65,11 @@ Result<Eigen::Vector3d> HierarchyParser::parse_offset() {
 
 Result<void> HierarchyParser::parse_channels(BvhJointChannels& joint) {
     double count = 0;
-    if (!m_cursor.parse_number(count) || count != std::floor(count) || count < 0 || count > 6) {
+    if (!m_cursor.parse_number(count)) {
         return fail("expected a channel count from 0 to 6 after CHANNELS, found " + m_cursor.peek_for_message());
+    }
+    if (count != std::floor(count) || count < 0 || count > 6) {
+        return fail("expected a channel count from 0 to 6 after CHANNELS, found " + format_number(count));
     }
     joint.count = static_cast<int>(count);
     std::array<bool, 6> seen{};
@@ -92,6 +102,9 @@ Result<void> HierarchyParser::open_joint(RawBvh& raw, int parent) {
         while (!name.empty() && TextCursor::is_blank(name.back())) name.remove_suffix(1);
     }
     if (name.empty()) return fail("expected a joint name");
+    if (name.find_first_of("{}") != std::string_view::npos) {
+        return fail("joint name '" + std::string(name.substr(0, 40)) + "' contains a brace");
+    }
     if (raw.skeleton.joint_count() >= k_bvh_max_joints) {
         return make_error(ErrorCode::limit, std::string(m_source) + ":" + std::to_string(m_cursor.line()) +
                                                 ": more than " + std::to_string(k_bvh_max_joints) + " joints");
@@ -172,15 +185,19 @@ Result<void> parse_motion_header(TextCursor& cursor, std::string_view source, Ra
     if (equals_ignore_case(frames, "Frames")) frames = cursor.next_token(); // "Frames :"
     else if (!equals_ignore_case(frames.substr(0, 7), "Frames:")) return fail("expected 'Frames:'");
     double frame_count = 0;
-    if (!cursor.parse_number(frame_count) || frame_count < 0 || frame_count != std::floor(frame_count) ||
-        frame_count > 1e8) {
-        return fail("expected a frame count after 'Frames:', found " + cursor.peek_for_message());
+    if (!cursor.parse_number(frame_count)) return fail("expected a frame count after 'Frames:', found " + cursor.peek_for_message());
+    if (frame_count < 0 || frame_count != std::floor(frame_count) || frame_count > k_bvh_max_frames) {
+        return fail("expected a frame count from 0 to " + std::to_string(k_bvh_max_frames) + " after 'Frames:', found " +
+                    format_number(frame_count));
     }
     raw.frame_count = static_cast<int>(frame_count);
     if (!equals_ignore_case(cursor.next_token(), "Frame")) return fail("expected 'Frame Time:'");
     if (!equals_ignore_case(cursor.next_token().substr(0, 5), "Time:")) return fail("expected 'Frame Time:'");
-    if (!cursor.parse_number(raw.frame_time_s) || raw.frame_time_s <= 0.0) {
-        return fail("expected a positive frame time in seconds after 'Frame Time:', found " + cursor.peek_for_message());
+    if (!cursor.parse_number(raw.frame_time_s)) {
+        return fail("expected the frame time in seconds after 'Frame Time:', found " + cursor.peek_for_message());
+    }
+    if (raw.frame_time_s < k_bvh_min_frame_time_s || raw.frame_time_s > k_bvh_max_frame_time_s) {
+        return fail("expected a frame time from 1e-06 to 3600 seconds after 'Frame Time:', found " + format_number(raw.frame_time_s));
     }
     return {};
 }

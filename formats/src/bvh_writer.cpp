@@ -4,6 +4,7 @@
 
 #include <cassert>
 #include <charconv>
+#include <algorithm>
 #include <cmath>
 
 namespace kumite {
@@ -12,7 +13,7 @@ namespace {
 constexpr double k_radians_to_degrees = 180.0 / 3.14159265358979323846;
 
 void append_number(std::string& out, double value) {
-    if (std::abs(value) < 1e-12) value = 0.0; // no "-0" or "1e-17" noise
+    if (std::abs(value) < 1e-12) value = 0.0; // no "-0" or "1e-17" noise in lengths and angles
     char buffer[32];
     const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value, std::chars_format::general, 10);
     assert(error == std::errc());
@@ -27,7 +28,7 @@ void write_hierarchy(std::string& out, const Skeleton& skeleton, const BvhLayout
     for (const EndSite& end_site : skeleton.end_sites) end_sites[end_site.joint].push_back(&end_site);
 
     auto write_offset = [&](const Eigen::Vector3d& offset, int depth) {
-        out.append(depth, '\t').append("OFFSET");
+        out.append(std::min(depth, 33), '\t').append("OFFSET");
         for (int axis = 0; axis < 3; ++axis) {
             out += ' ';
             append_number(out, offset[axis] * to_unit);
@@ -41,7 +42,8 @@ void write_hierarchy(std::string& out, const Skeleton& skeleton, const BvhLayout
     while (!stack.empty()) {
         const Item item = stack.back();
         stack.pop_back();
-        const std::string indent(item.depth, '\t');
+        // Indentation stops growing at 32 levels: a deep chain must not make the file quadratic in its depth.
+        const std::string indent(std::min(item.depth, 32), '\t');
         if (item.closing) {
             for (const EndSite* end_site : end_sites[item.joint]) {
                 out += indent + "\tEnd Site\n" + indent + "\t{\n";
@@ -89,7 +91,9 @@ std::string bvh_write_string(const Clip& clip, const BvhLayout& layout, const Le
     write_hierarchy(out, skeleton, layout, to_unit);
 
     out += "MOTION\nFrames: " + std::to_string(clip.frame_count()) + "\nFrame Time: ";
-    append_number(out, clip.frame_time_s);
+    char frame_time[32];
+    const auto frame_time_end = std::to_chars(frame_time, frame_time + sizeof frame_time, clip.frame_time_s).ptr; // exact
+    out.append(frame_time, frame_time_end);
     out += '\n';
 
     for (int frame = 0; frame < clip.frame_count(); ++frame) {

@@ -65,8 +65,12 @@ public:
         return m_text.substr(start, end - start);
     }
 
-    // Parses a finite number at the cursor (after blanks on this line): "1", "-.5", "2.", "+3", "1e-05".
-    // Returns false without moving when the next characters are not a number.
+    // No length, angle or time in a text format we read comes near this; beyond it a value is corrupt, and
+    // keeping it out means any value we accept can be written back and read again.
+    static constexpr double k_max_magnitude = 1e15;
+
+    // Parses a number at the cursor (after blanks on this line): "1", "-.5", "2.", "+3", "1e-05", with a
+    // magnitude of at most k_max_magnitude. Returns false without moving when the next characters are not one.
     bool parse_number(double& value) {
         skip_blanks();
         const char* const begin = m_text.data() + m_pos;
@@ -114,7 +118,7 @@ public:
             const auto [parsed_end, error] = std::from_chars(number_begin, p, magnitude);
             if (error != std::errc() || parsed_end != p) return false;
         }
-        if (!std::isfinite(magnitude)) return false;
+        if (!(magnitude <= k_max_magnitude)) return false; // also NaN and infinity
         value = negative ? -magnitude : magnitude;
         m_pos = static_cast<std::size_t>(p - m_text.data());
         return true;

@@ -99,7 +99,12 @@ TEST_CASE("bvh_malformed: header and channel errors name their line", "[formats]
                Catch::Contains("bad.bvh:9:") && Catch::Contains("'Wrotation'"));
     CHECK_THAT(with("Zrotation Xrotation Yrotation\n  }", "Zrotation Zrotation Yrotation\n  }"), Catch::Contains("listed twice"));
     CHECK_THAT(with("Frames: 2", "Frames: two"), Catch::Contains("bad.bvh:13:") && Catch::Contains("frame count"));
-    CHECK_THAT(with("Frame Time: 0.033333", "Frame Time: -1"), Catch::Contains("bad.bvh:14:") && Catch::Contains("positive frame time"));
+    CHECK_THAT(with("Frame Time: 0.033333", "Frame Time: -1"), Catch::Contains("bad.bvh:14:") && Catch::Contains("found -1"));
+    CHECK_THAT(with("Frame Time: 0.033333", "Frame Time: 1e-13"), Catch::Contains("bad.bvh:14:") && Catch::Contains("1e-06 to 3600"));
+    CHECK_THAT(with("CHANNELS 3 Zrotation", "CHANNELS 2.5 Zrotation"), Catch::Contains("found 2.5"));
+    CHECK_THAT(with("Frames: 2", "Frames: -2"), Catch::Contains("found -2"));
+    CHECK_THAT(with("JOINT Spine", "JOINT Spine {{"), Catch::Contains("bad.bvh:6:") && Catch::Contains("brace"));
+    CHECK_THAT(with("OFFSET 0 10 0", "OFFSET 0 1e300 0"), Catch::Contains("bad.bvh:8:") && Catch::Contains("3 numbers after OFFSET"));
     CHECK_THAT(with("    OFFSET 0 10 0\n", ""), Catch::Contains("Spine has no OFFSET"));
     CHECK_THAT(with("JOINT Spine", "JOINT"), Catch::Contains("bad.bvh:6:") && Catch::Contains("joint name"));
 }
@@ -131,4 +136,40 @@ TEST_CASE("bvh_malformed: unreadable paths", "[formats]") {
     Result<BvhFile> too_big = bvh_read_file(big, options);
     REQUIRE_FALSE(too_big.has_value());
     CHECK_THAT(too_big.error().message, Catch::Contains("limit"));
+}
+
+TEST_CASE("bvh_malformed: values beyond any plausible magnitude are refused", "[formats]") {
+    // 1.7976931348e308 is finite, but written with 10 digits it would round past the largest double.
+    CHECK_THAT(error_of(k_header + "0 0 0 0 0 0 0 0 -1.79769313459e308\n1 1 1 1 1 1 1 1 1\n"),
+               Catch::Contains("bad.bvh:15:") && Catch::Contains("value 9"));
+}
+
+TEST_CASE("bvh_malformed: joints without channels do not trip the size bound", "[formats]") {
+    // 1 animated root and 199 fixed joints: 600 frames of 6 values need few bytes but many joint-frames.
+    std::string text = "HIERARCHY\nROOT r\n{\nOFFSET 0 0 0\nCHANNELS 6 Xposition Yposition Zposition Zrotation Xrotation Yrotation\n";
+    for (int i = 0; i < 199; ++i) text += "JOINT j" + std::to_string(i) + "\n{\nOFFSET 0 1 0\nCHANNELS 0\n}\n";
+    text += "}\nMOTION\nFrames: 600\nFrame Time: 0.01\n";
+    for (int i = 0; i < 600; ++i) text += "0 0 0 0 0 0\n";
+    Result<BvhFile> file = bvh_parse(text, "fixed.bvh");
+    REQUIRE(file.has_value());
+    CHECK(file->clip.frame_count() == 600);
+}
+
+TEST_CASE("bvh_malformed: a deep chain below a foot is measured in linear time", "[formats]") {
+    // A humanoid lying along +X (so the standing height walks the frames) with a 9,000-joint chain under the
+    // left foot: the foot subtree is found once, not once per joint per frame (this took seconds before).
+    std::string text = "HIERARCHY\nROOT Hips\n{\nOFFSET 0 0 0\nCHANNELS 3 Zrotation Xrotation Yrotation\n"
+                       "JOINT Spine\n{\nOFFSET 10 0 0\nCHANNELS 0\nJOINT Head\n{\nOFFSET 10 0 0\nCHANNELS 0\n"
+                       "JOINT LeftArm\n{\nOFFSET 1 1 0\nCHANNELS 0\nJOINT LeftForeArm\n{\nOFFSET 1 0 0\nCHANNELS 0\n"
+                       "JOINT LeftHand\n{\nOFFSET 1 0 0\nCHANNELS 0\n}\n}\n}\n}\n}\n"
+                       "JOINT LeftUpLeg\n{\nOFFSET -1 1 0\nCHANNELS 0\nJOINT LeftLeg\n{\nOFFSET -40 0 0\nCHANNELS 0\n"
+                       "JOINT LeftFoot\n{\nOFFSET -40 0 0\nCHANNELS 0\n";
+    const int depth = 9000;
+    for (int i = 0; i < depth; ++i) text += "JOINT t" + std::to_string(i) + "\n{\nOFFSET 0.001 0 0\nCHANNELS 0\n";
+    for (int i = 0; i < depth; ++i) text += "}\n";
+    text += "}\n}\n}\n}\nMOTION\nFrames: 200\nFrame Time: 0.01\n";
+    for (int i = 0; i < 200; ++i) text += "0 0 90\n";
+    Result<BvhFile> file = bvh_parse(text, "deep.bvh");
+    REQUIRE(file.has_value());
+    CHECK(file->clip.skeleton.joint_count() == depth + 9);
 }

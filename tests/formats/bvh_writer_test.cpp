@@ -75,6 +75,27 @@ TEST_CASE("bvh_writer: canonical angles are written as they were read", "[format
     CHECK_THAT(written, Catch::Contains("\n109.754 85.5453 -109.015\n179 10 -179\n0 -90 179.5\n110 86 -110\n"));
 }
 
+TEST_CASE("bvh_writer: deep hierarchies stay linear in size, tiny frame times stay exact", "[formats]") {
+    Clip clip;
+    const int depth = 2000;
+    for (int joint = 0; joint < depth; ++joint) {
+        clip.skeleton.names.push_back("j" + std::to_string(joint));
+        clip.skeleton.parents.push_back(joint - 1);
+        clip.skeleton.rest_offsets.push_back(Eigen::Vector3d(0, 0.01, 0));
+    }
+    clip.frame_time_s = 1.0 / 120000.0;
+    clip.root_translations = {Eigen::Vector3d::Zero()};
+    clip.local_rotations.assign(depth, Eigen::Quaterniond::Identity());
+    const std::string text = bvh_write_string(clip, bvh_default_layout(clip), LengthUnit{"m", 1.0});
+    CHECK(text.size() < 400u * depth); // ~2000 levels of tabs per line would be quadratic
+    BvhReadOptions options;
+    options.unit = LengthUnit{"m", 1.0};
+    Result<BvhFile> again = bvh_parse(text, "deep.bvh", options);
+    REQUIRE(again.has_value());
+    CHECK(again->clip.skeleton.parents == clip.skeleton.parents);
+    CHECK(again->clip.frame_time_s == clip.frame_time_s);
+}
+
 TEST_CASE("bvh_writer: a default layout writes any clip", "[formats]") {
     Clip clip;
     clip.skeleton.names = {"root", "tip"};

@@ -56,6 +56,11 @@ struct BvhFile {
 };
 
 inline constexpr int k_bvh_max_joints = 10000;
+inline constexpr int k_bvh_max_frames = 100000000;
+inline constexpr double k_bvh_min_frame_time_s = 1e-6;
+inline constexpr double k_bvh_max_frame_time_s = 3600.0;
+// Joints x frames a clip may hold (~2.8 GB with translations); larger files are refused as a limit.
+inline constexpr std::size_t k_bvh_max_joint_frames = 50000000;
 
 // Parses BVH text; `source_name` (usually the path) prefixes error messages.
 Result<BvhFile> bvh_parse(std::string_view text, std::string_view source_name, const BvhReadOptions& options = {});
