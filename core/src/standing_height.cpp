@@ -74,7 +74,7 @@ double median(std::vector<double> values) {
 // Bone lengths along foot -> knee -> hip and pelvis -> ... -> head top, plus the two short vertical pieces
 // that bone lengths cannot give (ankle above the sole, hip joints below the pelvis), taken as medians over
 // frames. Bone lengths do not depend on the pose, so every clip of one skeleton gets nearly the same height.
-double chain_height(const Clip& clip, const BodyMap& map, const BodyRegions& regions) {
+StandingHeight chain_height(const Clip& clip, const BodyMap& map, const BodyRegions& regions) {
     const Skeleton& skeleton = clip.skeleton;
     double leg = 0.0;
     for (auto [shin, foot] : {std::pair{BodyPart::shin_l, BodyPart::foot_l}, std::pair{BodyPart::shin_r, BodyPart::foot_r}}) {
@@ -107,7 +107,8 @@ double chain_height(const Clip& clip, const BodyMap& map, const BodyRegions& reg
         ankle_heights.push_back(ankle);
         if (std::isfinite(hip)) hip_drops.push_back(points[pelvis].y() - hip);
     }
-    return median(ankle_heights) + leg + median(hip_drops) + trunk + head_end;
+    const double ankle = median(ankle_heights);
+    return {ankle + leg + median(hip_drops) + trunk + head_end, ankle, StandingHeight::Method::chain_lengths};
 }
 
 bool is_upright(const BodyMap& map, const std::vector<Eigen::Vector3d>& points) {
@@ -119,7 +120,35 @@ bool is_upright(const BodyMap& map, const std::vector<Eigen::Vector3d>& points) 
     return up_trunk.y() > 0.7 * up_trunk.norm() && down_leg.y() > 0.7 * down_leg.norm();
 }
 
+double percentile_10(std::vector<double> values) {
+    const size_t rank = values.size() / 10;
+    std::nth_element(values.begin(), values.begin() + rank, values.end());
+    return values[rank];
+}
+
 } // namespace
+
+FloorEstimate floor_estimate(const Clip& clip, const BodyMap& body_map) {
+    const Skeleton& skeleton = clip.skeleton;
+    const BodyRegions regions(skeleton, body_map);
+    std::vector<double> soles, ankles;
+    auto measure = [&](const std::vector<Eigen::Vector3d>& points) {
+        soles.push_back(foot_bottom_y(skeleton, regions, points));
+        double ankle = std::numeric_limits<double>::infinity();
+        for (BodyPart foot : {BodyPart::foot_l, BodyPart::foot_r}) {
+            if (body_map.has(foot)) ankle = std::min(ankle, points[body_map.joint(foot)].y());
+        }
+        ankles.push_back(ankle);
+    };
+    if (clip.frame_count() == 0) measure(pose_points(skeleton, clip.rest_pose().view()));
+    const int stride = std::max(1, clip.frame_count() / 200);
+    for (int frame = 0; frame < clip.frame_count(); frame += stride) measure(pose_points(skeleton, clip.pose(frame)));
+    FloorEstimate estimate;
+    estimate.floor_y = percentile_10(soles);
+    if (std::abs(estimate.floor_y) < k_floor_snap_m) estimate.floor_y = 0.0;
+    estimate.ankle_height = percentile_10(ankles) - estimate.floor_y;
+    return estimate;
+}
 
 StandingHeight standing_height(const Clip& clip, const BodyMap& body_map) {
     const Skeleton& skeleton = clip.skeleton;
@@ -135,14 +164,18 @@ StandingHeight standing_height(const Clip& clip, const BodyMap& body_map) {
             low = low.cwiseMin(p);
             high = high.cwiseMax(p);
         }
-        return {(high - low).maxCoeff(), StandingHeight::Method::rest_pose_extent};
+        return {(high - low).maxCoeff(), 0.0, StandingHeight::Method::rest_pose_extent};
     }
     const BodyRegions regions(skeleton, body_map);
     if (is_upright(body_map, rest_points) || clip.frame_count() == 0) {
-        return {head_top_y(skeleton, regions, rest_points) - foot_bottom_y(skeleton, regions, rest_points),
-                StandingHeight::Method::rest_pose};
+        const double sole = foot_bottom_y(skeleton, regions, rest_points);
+        double ankle = std::numeric_limits<double>::infinity();
+        for (BodyPart foot : {BodyPart::foot_l, BodyPart::foot_r}) {
+            if (body_map.has(foot)) ankle = std::min(ankle, rest_points[body_map.joint(foot)].y() - sole);
+        }
+        return {head_top_y(skeleton, regions, rest_points) - sole, ankle, StandingHeight::Method::rest_pose};
     }
-    return {chain_height(clip, body_map, regions), StandingHeight::Method::chain_lengths};
+    return chain_height(clip, body_map, regions);
 }
 
 } // namespace kumite

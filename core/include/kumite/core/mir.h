@@ -1,0 +1,106 @@
+#pragma once
+// The morphology-independent representation (MIR, after Kulpa, Multon & Arnaldi 2005) of one pose, and the
+// encoder and decoder that move poses in and out of it. Decoding multiplies by the target skeleton's lengths and
+// solves each limb analytically, so bone lengths are exactly the target's.
+//
+// - hip centre: x and z divided by the leg length (thigh + shin); y is its height above the standing ankle
+//   height, divided by the leg length, so a straight standing leg lands the target's sole on the floor;
+// - every body part and trunk-chain joint: its world anatomical frame (model rotation x rest frame, see
+//   rest_anatomy.h), which means the same thing on any skeleton;
+// - spine (pelvis..chest) and neck (chest..head) chains: frames at fractions of the chain's length, so chains with
+//   different joint counts exchange them by interpolation;
+// - limbs (shoulder->wrist, hip->ankle): the extremity relative to the limb root in the parent part's frame,
+//   divided by the limb length, and the swivel angle of the elbow/knee around the root->extremity line;
+// - other joints: their local rotations, applied to target joints of the same name.
+//
+// Encoder and decoder own their workspaces: encode() and decode() do not allocate.
+
+#include "kumite/core/rest_anatomy.h"
+
+#include <span>
+#include <string>
+
+namespace kumite {
+
+struct MirChainFrames {
+    std::array<Eigen::Quaterniond, k_max_chain_joints> frames;
+    std::array<double, k_max_chain_joints> fractions{};
+    int count = 0;
+};
+
+struct MirFrame {
+    Eigen::Vector3d hip_centre = Eigen::Vector3d::Zero();                // see above, dimensionless
+    std::array<Eigen::Quaterniond, k_body_part_count> part_frames;       // world anatomical frames
+    std::array<bool, k_body_part_count> has_part{};
+    MirChainFrames spine;
+    MirChainFrames neck;
+    std::array<Eigen::Vector3d, k_limb_count> extremity;                 // in the parent part's frame / limb length
+    std::array<double, k_limb_count> swivel{};                           // radians
+    std::vector<Eigen::Quaterniond> source_local_rotations;              // [source joint], sized once
+};
+
+// World positions that override a limb's encoded extremity (foot locking), and a shift of the hip centre that
+// lets pinned legs keep their encoded extension.
+struct LimbPins {
+    std::array<bool, k_limb_count> pinned{};
+    std::array<Eigen::Vector3d, k_limb_count> extremity_world;
+    Eigen::Vector3d hip_shift_world = Eigen::Vector3d::Zero(); // metres
+};
+
+class MirEncoder {
+public:
+    MirEncoder(const Skeleton& skeleton, const RestAnatomy& anatomy);
+
+    // `frame` is sized on first use and reused. Also leaves the pose's model transforms in model_positions().
+    void encode(MirFrame& frame, const PoseView& pose);
+
+    std::span<const Eigen::Vector3d> model_positions() const { return m_positions; }
+
+private:
+    const Skeleton& m_skeleton;
+    const RestAnatomy& m_anatomy;
+    std::vector<Eigen::Vector3d> m_positions;
+    std::vector<Eigen::Quaterniond> m_rotations;
+};
+
+class MirDecoder {
+public:
+    // `source_joint_names` names the joints of MirFrame::source_local_rotations.
+    MirDecoder(const Skeleton& skeleton, const RestAnatomy& anatomy, std::span<const std::string> source_joint_names);
+
+    // Writes the pose on the target skeleton: root translation, local rotations and, when the pelvis is not the
+    // root, local translations. A foot that would pass below the floor (y = 0) is pitched about its ankle until
+    // its lowest point touches it. `pose` is sized on first use and reused.
+    void decode(Pose& pose, const MirFrame& frame, const LimbPins& pins = {});
+
+    // Model transforms of the last decoded pose.
+    std::span<const Eigen::Vector3d> model_positions() const { return m_positions; }
+    std::span<const Eigen::Quaterniond> model_rotations() const { return m_rotations; }
+
+private:
+    enum class Role : std::uint8_t { above_pelvis, pelvis, spine, neck, part, limb_root, limb_inner, other };
+    void solve_limb(int limb, const MirFrame& frame, const LimbPins& pins);
+    void keep_feet_above_floor();
+
+    const Skeleton& m_skeleton;
+    const RestAnatomy& m_anatomy;
+    std::vector<Role> m_roles;               // [joint]
+    std::vector<int> m_source_joint;         // [joint] same-name source joint, or -1
+    std::vector<int> m_limb_of_root;         // [joint] limb index when the joint is a limb root, else -1
+    std::vector<int> m_part_of;              // [joint] BodyPart index, or -1
+    std::vector<Eigen::Vector3d> m_positions;
+    std::vector<Eigen::Quaterniond> m_rotations;
+    std::vector<bool> m_solved;              // [joint] rotation set by a limb solve
+    std::array<std::vector<int>, 2> m_foot_joints;     // [foot] the ankle and the joints below it
+    std::array<std::vector<int>, 2> m_foot_end_sites;  // [foot] End Sites below the ankle
+};
+
+// The swivel angle of `middle` around the line root->extremity, measured from `reference` projected on the
+// plane normal to that line; positive counter-clockwise looking down the line. Shared by encoder and decoder.
+double limb_swivel(const Eigen::Vector3d& root, const Eigen::Vector3d& middle, const Eigen::Vector3d& extremity,
+                   const Eigen::Vector3d& reference);
+
+// The reference direction for a limb's swivel: down from the chest for arms, forward from the pelvis for legs.
+Eigen::Vector3d limb_swivel_reference(const MirFrame& frame, int limb);
+
+} // namespace kumite
