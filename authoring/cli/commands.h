@@ -20,4 +20,10 @@ int run_positions(int argc, char** argv);
 const CommandSpec& convert_spec();
 int run_convert(int argc, char** argv);
 
+const CommandSpec& characters_spec();
+int run_characters(int argc, char** argv);
+
+const CommandSpec& retarget_spec();
+int run_retarget(int argc, char** argv);
+
 } // namespace kumite::cli
