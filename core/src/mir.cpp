@@ -50,6 +50,53 @@ Eigen::Vector3d limb_swivel_reference(const MirFrame& frame, int limb) {
     return frame.part_frames[static_cast<int>(BodyPart::pelvis)] * Eigen::Vector3d::UnitZ();
 }
 
+namespace {
+
+bool is_trunk_part(int part) { return part <= static_cast<int>(BodyPart::head); }
+
+// Mirror of a world anatomical frame: M G D, with D flipping the axis that mirroring reverses in the rest frame
+// (the lateral axis of a trunk frame, the third axis of a limb frame).
+Eigen::Quaterniond mirror_frame(const Eigen::Quaterniond& frame, const Eigen::Matrix3d& reflection, bool trunk) {
+    const Eigen::Vector3d flip = trunk ? Eigen::Vector3d(-1, 1, 1) : Eigen::Vector3d(1, 1, -1);
+    return Eigen::Quaterniond(Eigen::Matrix3d(reflection * frame.toRotationMatrix() * flip.asDiagonal())).normalized();
+}
+
+int mirrored_limb(int limb) { return limb ^ 1; } // arm_l <-> arm_r, leg_l <-> leg_r
+
+} // namespace
+
+void mir_frame_mirror(MirFrame& out, const MirFrame& frame, const MirrorSymmetry& symmetry, std::span<const int> parents) {
+    const Eigen::Matrix3d& m = symmetry.reflection;
+    out.hip_centre = m * frame.hip_centre; // the reflection keeps y: it only mixes the horizontal axes
+    for (int part = 0; part < k_body_part_count; ++part) {
+        const int source = static_cast<int>(body_part_mirrored(static_cast<BodyPart>(part)));
+        out.has_part[part] = frame.has_part[source];
+        out.part_frames[part] = mirror_frame(frame.part_frames[source], m, is_trunk_part(part));
+    }
+    for (auto [to, from] : {std::pair{&out.spine, &frame.spine}, std::pair{&out.neck, &frame.neck}}) {
+        to->count = from->count;
+        for (int k = 0; k < from->count; ++k) {
+            to->frames[k] = mirror_frame(from->frames[k], m, true);
+            to->fractions[k] = from->fractions[k];
+        }
+    }
+    for (int limb = 0; limb < k_limb_count; ++limb) {
+        const int source = mirrored_limb(limb);
+        // The extremity is expressed in the parent part's frame, whose flipped axis is known from its kind.
+        const bool parent_is_trunk = limb >= 2 || !frame.has_part[static_cast<int>(limb == 0 ? BodyPart::clavicle_r : BodyPart::clavicle_l)];
+        Eigen::Vector3d extremity = frame.extremity[source];
+        if (parent_is_trunk) extremity.x() = -extremity.x();
+        else extremity.z() = -extremity.z();
+        out.extremity[limb] = extremity;
+        out.swivel[limb] = -frame.swivel[source];
+    }
+    out.source_local_rotations.resize(frame.source_local_rotations.size());
+    for (size_t joint = 0; joint < frame.source_local_rotations.size(); ++joint) {
+        out.source_local_rotations[joint] = symmetry.mirror_local_rotation(
+            static_cast<int>(joint), frame.source_local_rotations[symmetry.partner[joint]], parents[joint]);
+    }
+}
+
 MirEncoder::MirEncoder(const Skeleton& skeleton, const RestAnatomy& anatomy)
     : m_skeleton(skeleton), m_anatomy(anatomy), m_positions(skeleton.joint_count()), m_rotations(skeleton.joint_count()) {}
 
@@ -205,11 +252,19 @@ void MirDecoder::decode(Pose& pose, const MirFrame& frame, const LimbPins& pins)
         case Role::neck: {
             const TrunkChain& chain = m_roles[joint] == Role::spine ? m_anatomy.spine : m_anatomy.neck;
             double fraction = 0.0;
+            int index = 0;
             for (int k = 0; k < chain.count; ++k) {
-                if (chain.joints[k] == joint) fraction = chain.fractions[k];
+                if (chain.joints[k] == joint) {
+                    fraction = chain.fractions[k];
+                    index = k;
+                }
             }
             const MirChainFrames& frames = m_roles[joint] == Role::spine ? frame.spine : frame.neck;
-            m_rotations[joint] = chain_frame_at(frames, fraction) * m_anatomy.rest_frames[joint].conjugate();
+            // Chains of the same length pair joint for joint (zero-length links make fractions tie); others
+            // interpolate by fraction of the chain's length.
+            const Eigen::Quaterniond chain_frame = frames.count == chain.count ? frames.frames[index]
+                                                                             : chain_frame_at(frames, fraction);
+            m_rotations[joint] = chain_frame * m_anatomy.rest_frames[joint].conjugate();
             break;
         }
         case Role::part:

@@ -97,16 +97,44 @@ Result<RestAnatomy> rest_anatomy_build(const Clip& clip, const BodyMap& map) {
     const std::vector<Eigen::Vector3d>& p = anatomy.rest_positions;
     auto at = [&](BodyPart part) { return p[map.joint(part)]; };
 
-    // Trunk frame: up from pelvis to head, left from the right hip to the left one.
-    const Eigen::Vector3d up = (at(BodyPart::head) - at(BodyPart::pelvis)).normalized();
-    Eigen::Vector3d left = at(BodyPart::thigh_l) - at(BodyPart::thigh_r);
-    if (std::abs(left.normalized().dot(up)) > 0.9) left = at(BodyPart::upper_arm_l) - at(BodyPart::upper_arm_r);
-    left = (left - left.dot(up) * up).normalized();
-    const Eigen::Vector3d forward = left.cross(up);
-    anatomy.trunk_frame.col(0) = left;
-    anatomy.trunk_frame.col(1) = up;
-    anatomy.trunk_frame.col(2) = forward;
-
+    // Trunk frames, one per body region, from the joints right at the branch: rest poses need not be physical
+    // (Bandai's puts the hips' left-right axis along Y, the chest's along Z and each arm along X), so only the
+    // offsets next to a joint say how its own axes sit. Left runs between the first joints of the two side
+    // chains below the branch (the next pair when those coincide), up from the branch along the trunk; left is
+    // kept exact and up made orthogonal to it, so the frame mirrors onto itself.
+    auto side_axis = [&](int branch, int left_end, int right_end) {
+        std::vector<int> left_chain, right_chain; // branch's descendants toward each end, nearest first
+        for (int j = left_end; j >= 0 && j != branch; j = skeleton.parents[j]) left_chain.insert(left_chain.begin(), j);
+        for (int j = right_end; j >= 0 && j != branch; j = skeleton.parents[j]) right_chain.insert(right_chain.begin(), j);
+        for (size_t k = 0; k < std::min(left_chain.size(), right_chain.size()); ++k) {
+            const Eigen::Vector3d across = p[left_chain[k]] - p[right_chain[k]];
+            if (across.norm() > 0.01) return Eigen::Vector3d(across);
+        }
+        return Eigen::Vector3d(p[left_end] - p[right_end]);
+    };
+    auto trunk_direction = [&](int from, int toward) {
+        int next = toward;
+        for (int j = toward; j >= 0 && j != from; j = skeleton.parents[j]) {
+            if ((p[j] - p[from]).norm() > 0.01) next = j; // the nearest joint along the way that is not on top of `from`
+        }
+        return Eigen::Vector3d(p[next] - p[from]);
+    };
+    auto trunk_frame_from = [&](const Eigen::Vector3d& left_axis, const Eigen::Vector3d& up_axis) {
+        const Eigen::Vector3d left = left_axis.normalized();
+        const Eigen::Vector3d trunk_up = (up_axis - up_axis.dot(left) * left).normalized();
+        Eigen::Matrix3d frame;
+        frame.col(0) = left;
+        frame.col(1) = trunk_up;
+        frame.col(2) = left.cross(trunk_up);
+        return frame;
+    };
+    const int pelvis = map.joint(BodyPart::pelvis), chest = map.joint(BodyPart::chest), head = map.joint(BodyPart::head);
+    const Eigen::Matrix3d hips_frame =
+        trunk_frame_from(side_axis(pelvis, map.joint(BodyPart::thigh_l), map.joint(BodyPart::thigh_r)), trunk_direction(pelvis, chest));
+    const Eigen::Matrix3d shoulders_frame =
+        trunk_frame_from(side_axis(chest, map.joint(BodyPart::upper_arm_l), map.joint(BodyPart::upper_arm_r)), trunk_direction(chest, head));
+    anatomy.trunk_frame = hips_frame;
+    anatomy.shoulders_frame = shoulders_frame;
     anatomy.rest_frames.assign(joints, Eigen::Quaterniond::Identity());
     anatomy.has_frame.assign(joints, false);
     auto set_frame = [&](int joint, const Eigen::Matrix3d& frame) {
@@ -117,8 +145,9 @@ Result<RestAnatomy> rest_anatomy_build(const Clip& clip, const BodyMap& map) {
     anatomy.spine = trunk_chain(skeleton, p, map.joint(BodyPart::pelvis), map.joint(BodyPart::chest));
     anatomy.neck = trunk_chain(skeleton, p, map.joint(BodyPart::chest), map.joint(BodyPart::head));
     for (const TrunkChain* chain : {&anatomy.spine, &anatomy.neck}) {
-        for (int k = 0; k < chain->count; ++k) set_frame(chain->joints[k], anatomy.trunk_frame);
+        for (int k = 0; k < chain->count; ++k) set_frame(chain->joints[k], shoulders_frame);
     }
+    set_frame(map.joint(BodyPart::pelvis), hips_frame);
 
     // Limb parts: bone direction to the next part, secondary forward (arms, legs) or up (feet, toes).
     struct LimbPart { BodyPart part; BodyPart next; bool foot_like; };
@@ -143,6 +172,8 @@ Result<RestAnatomy> rest_anatomy_build(const Clip& clip, const BodyMap& map) {
         const int next = limb_part.next == limb_part.part ? -1 : map.joint(limb_part.next);
         // A hand or toe without children continues its parent's bone; a foot without toes points forward.
         const int parent = skeleton.parents[joint];
+        const Eigen::Matrix3d& region = limb_part.part >= BodyPart::thigh_l ? hips_frame : shoulders_frame;
+        const Eigen::Vector3d up = region.col(1), forward = region.col(2);
         const Eigen::Vector3d fallback = limb_part.foot_like && limb_part.part != BodyPart::toe_l && limb_part.part != BodyPart::toe_r
                                              ? forward
                                              : (parent >= 0 ? p[joint] - p[parent] : up);

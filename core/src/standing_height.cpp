@@ -141,10 +141,9 @@ FloorEstimate floor_estimate(const Clip& clip, const BodyMap& body_map) {
         ankles.push_back(ankle);
     };
     if (clip.frame_count() == 0) measure(pose_points(skeleton, clip.rest_pose().view()));
-    const int stride = std::max(1, clip.frame_count() / 200);
-    for (int frame = 0; frame < clip.frame_count(); frame += stride) measure(pose_points(skeleton, clip.pose(frame)));
+    for (int frame = 0; frame < clip.frame_count(); ++frame) measure(pose_points(skeleton, clip.pose(frame))); // every frame: the floor is a minimum
     FloorEstimate estimate;
-    estimate.floor_y = percentile_10(soles);
+    estimate.floor_y = *std::min_element(soles.begin(), soles.end());
     if (std::abs(estimate.floor_y) < k_floor_snap_m) estimate.floor_y = 0.0;
     estimate.ankle_height = percentile_10(ankles) - estimate.floor_y;
     return estimate;

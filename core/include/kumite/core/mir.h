@@ -15,6 +15,7 @@
 //
 // Encoder and decoder own their workspaces: encode() and decode() do not allocate.
 
+#include "kumite/core/clip_mirror.h"
 #include "kumite/core/rest_anatomy.h"
 
 #include <span>
@@ -94,6 +95,11 @@ private:
     std::array<std::vector<int>, 2> m_foot_joints;     // [foot] the ankle and the joints below it
     std::array<std::vector<int>, 2> m_foot_end_sites;  // [foot] End Sites below the ankle
 };
+
+// The MIR of the mirrored pose (see clip_mirror.h): parts and limbs trade sides, world quantities are reflected,
+// swivels change sign. Encoding a mirrored clip gives the mirror of its encoding; `out` is sized on first use.
+// `parents` are the source skeleton's (for its local rotations).
+void mir_frame_mirror(MirFrame& out, const MirFrame& frame, const MirrorSymmetry& symmetry, std::span<const int> parents);
 
 // The swivel angle of `middle` around the line root->extremity, measured from `reference` projected on the
 // plane normal to that line; positive counter-clockwise looking down the line. Shared by encoder and decoder.

@@ -3,9 +3,10 @@
 // from its rest pose (identity rotations) and body map: anatomical frames per part, limb and leg lengths, the
 // trunk chains, the hip centre and the ankle height.
 //
-// An anatomical frame is a rotation whose columns are axes of a body part in the rest pose: for trunk parts
-// (pelvis, spine chain, chest, neck chain, head) the trunk frame [left, up, forward]; for a limb part its bone
-// direction as the second column with forward (arms, legs) or up (feet, toes) made orthogonal to it as the first.
+// An anatomical frame is a rotation whose columns are axes of a body part in the rest pose: for the pelvis the
+// hips' trunk frame [left, up, forward] (left from the right hip to the left one); for the spine and neck chains
+// and the head the shoulders' trunk frame (left from shoulder to shoulder); for a limb part its bone direction as
+// the second column with its region's forward (arms, legs) or up (feet, toes) made orthogonal to it as the first.
 // Because they are defined from positions, two skeletons with different rest conventions (Bandai's bones along +X,
 // a T-pose) agree on them, so `model_rotation * rest_frame` transfers between skeletons.
 
@@ -51,7 +52,8 @@ struct RestAnatomy {
     std::array<LimbChain, k_limb_count> limbs;
     TrunkChain spine;                                            // pelvis .. chest
     TrunkChain neck;                                             // chest .. head
-    Eigen::Matrix3d trunk_frame = Eigen::Matrix3d::Identity();   // [left, up, forward] in the rest pose
+    Eigen::Matrix3d trunk_frame = Eigen::Matrix3d::Identity();   // [left, up, forward] of the hips, rest pose
+    Eigen::Matrix3d shoulders_frame = Eigen::Matrix3d::Identity(); // [left, up, forward] of the shoulders
     double leg_length = 0.0;                                     // metres, mean thigh + shin of both legs
     double floor_y = 0.0;                                        // metres, the floor of the clip's frames
     double ankle_height = 0.0;                                   // metres, flat-footed ankle above that floor

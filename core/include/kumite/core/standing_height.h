@@ -23,7 +23,7 @@ struct StandingHeight {
 StandingHeight standing_height(const Clip& clip, const BodyMap& body_map);
 
 // Where a capture's floor is and how high a flat-footed ankle stands above it, in the clip's unit (metres
-// once read). The floor is the 10th percentile over frames of the lowest foot point, snapped to y = 0 when
+// once read). The floor is the lowest foot point over the frames, snapped to y = 0 when
 // within 5 cm of it (captures stand on y = 0, but a foot modelled without sole points, like Bandai's zero-length
 // toe End Site, never reaches it); the ankle height is the 10th percentile of the lower ankle above that floor
 // (flat-footed; clips spent mostly on the toes would lift a median). A clip without frames uses its rest pose.

@@ -1,0 +1,117 @@
+#include "kumite/core/clip_mirror.h"
+
+#include "kumite/core/forward_kinematics.h"
+
+#include <algorithm>
+#include <string>
+
+namespace kumite {
+
+namespace {
+
+Eigen::Matrix3d householder(const Eigen::Vector3d& normal) {
+    const Eigen::Vector3d n = normal.normalized();
+    return Eigen::Matrix3d::Identity() - 2.0 * n * n.transpose();
+}
+
+// Offsets below `joint` paired with their partners' (children, then the first End Sites).
+std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> child_offset_pairs(const Skeleton& skeleton,
+                                                                            const std::vector<int>& partner, int joint) {
+    std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> pairs;
+    for (int child = joint + 1; child < skeleton.joint_count(); ++child) {
+        if (skeleton.parents[child] == joint) pairs.emplace_back(skeleton.rest_offsets[child], skeleton.rest_offsets[partner[child]]);
+    }
+    const EndSite* own = nullptr;
+    const EndSite* theirs = nullptr;
+    for (const EndSite& end_site : skeleton.end_sites) {
+        if (end_site.joint == joint && !own) own = &end_site;
+        if (end_site.joint == partner[joint] && !theirs) theirs = &end_site;
+    }
+    if (own && theirs) pairs.emplace_back(own->offset_in_joint, theirs->offset_in_joint);
+    return pairs;
+}
+
+} // namespace
+
+Eigen::Quaterniond MirrorSymmetry::mirror_local_rotation(int joint, const Eigen::Quaterniond& partner_rotation, int parent) const {
+    const Eigen::Matrix3d& before = parent >= 0 ? local_reflections[parent] : reflection;
+    return Eigen::Quaterniond(Eigen::Matrix3d(before * partner_rotation.toRotationMatrix() * local_reflections[joint])).normalized();
+}
+
+Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, const BodyMap& map, double tolerance_m) {
+    const int joints = skeleton.joint_count();
+    MirrorSymmetry symmetry;
+    symmetry.partner.assign(joints, -1);
+    std::vector<JointNameParts> names(joints);
+    for (int joint = 0; joint < joints; ++joint) names[joint] = split_joint_name(skeleton.names[joint]);
+    for (int joint = 0; joint < joints; ++joint) {
+        if (names[joint].side == Side::none) {
+            symmetry.partner[joint] = joint;
+            continue;
+        }
+        const Side other = names[joint].side == Side::left ? Side::right : Side::left;
+        for (int candidate = 0; candidate < joints; ++candidate) {
+            if (names[candidate].side == other && names[candidate].base == names[joint].base) symmetry.partner[joint] = candidate;
+        }
+        if (symmetry.partner[joint] < 0) {
+            return make_error(ErrorCode::invalid, "joint " + skeleton.names[joint] + " has no mirror partner");
+        }
+    }
+    for (int joint = 1; joint < joints; ++joint) {
+        if (symmetry.partner[skeleton.parents[joint]] != skeleton.parents[symmetry.partner[joint]]) {
+            return make_error(ErrorCode::invalid, "joints " + skeleton.names[joint] + " and " + skeleton.names[symmetry.partner[joint]] +
+                                                      " hang from parents that are not partners");
+        }
+    }
+
+    // The pelvis and the joints above it carry the root motion: their own offsets need not be symmetric.
+    std::vector<bool> carries_root_motion(joints, false);
+    for (int joint = map.joint(BodyPart::pelvis); joint >= 0; joint = skeleton.parents[joint]) carries_root_motion[joint] = true;
+
+    symmetry.local_reflections.assign(joints, symmetry.reflection);
+    for (int joint = 0; joint < joints; ++joint) {
+        const auto pairs = child_offset_pairs(skeleton, symmetry.partner, joint);
+        auto fits = [&](const Eigen::Matrix3d& candidate) {
+            for (const auto& [own, theirs] : pairs) {
+                if ((candidate * own - theirs).norm() > tolerance_m) return false;
+            }
+            return true;
+        };
+        std::vector<Eigen::Matrix3d> candidates;
+        for (const auto& [own, theirs] : pairs) {
+            if ((own - theirs).norm() > tolerance_m) candidates.push_back(householder(own - theirs));
+        }
+        candidates.push_back(joint > 0 ? symmetry.local_reflections[skeleton.parents[joint]] : symmetry.reflection);
+        for (int axis = 0; axis < 3; ++axis) candidates.push_back(householder(Eigen::Vector3d::Unit(axis)));
+        const auto found = std::find_if(candidates.begin(), candidates.end(), fits);
+        if (found == candidates.end()) {
+            return make_error(ErrorCode::invalid, "the joints below " + skeleton.names[joint] + " and " +
+                                                      skeleton.names[symmetry.partner[joint]] + " are not mirror images");
+        }
+        symmetry.local_reflections[joint] = *found;
+    }
+    (void)carries_root_motion;
+    return symmetry;
+}
+
+Clip clip_mirror(const Clip& clip, const MirrorSymmetry& symmetry) {
+    const Skeleton& skeleton = clip.skeleton;
+    const int joints = skeleton.joint_count();
+    Clip mirrored = clip;
+    for (int frame = 0; frame < clip.frame_count(); ++frame) {
+        const size_t first = static_cast<size_t>(frame) * joints;
+        mirrored.root_translations[frame] = symmetry.reflection * clip.root_translations[frame];
+        for (int joint = 0; joint < joints; ++joint) {
+            const int partner = symmetry.partner[joint];
+            const int parent = skeleton.parents[joint];
+            mirrored.local_rotations[first + joint] = symmetry.mirror_local_rotation(joint, clip.local_rotations[first + partner], parent);
+            if (clip.has_local_translations()) {
+                const Eigen::Matrix3d& before = parent >= 0 ? symmetry.local_reflections[parent] : symmetry.reflection;
+                mirrored.local_translations[first + joint] = before * clip.local_translations[first + partner];
+            }
+        }
+    }
+    return mirrored;
+}
+
+} // namespace kumite

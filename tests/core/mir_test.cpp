@@ -1,0 +1,170 @@
+// The morphology-independent representation on real captures: exact on the actor's own skeleton, consistent
+// under mirroring, and within the retargeting quality bounds on the five shipped characters.
+
+#include "kumite/core/forward_kinematics.h"
+#include "kumite/core/retarget_clip.h"
+#include "kumite/formats/bvh_reader.h"
+#include "support/pose_matchers.h"
+#include "support/test_paths.h"
+
+using namespace kumite;
+
+namespace {
+
+std::optional<BvhFile> read_capture(const std::string& relative) {
+    const std::filesystem::path path = kumite::test::mocap_root() / relative;
+    if (!std::filesystem::exists(path)) return std::nullopt;
+    Result<BvhFile> file = bvh_read_file(path);
+    REQUIRE(file.has_value());
+    return std::move(*file);
+}
+
+std::vector<Eigen::Vector3d> positions_of(const Skeleton& skeleton, const PoseView& pose) {
+    std::vector<Eigen::Vector3d> positions(skeleton.joint_count());
+    std::vector<Eigen::Quaterniond> rotations(skeleton.joint_count());
+    forward_kinematics(positions, rotations, skeleton, pose);
+    return positions;
+}
+
+const char* const k_self_captures[] = {"bandai-namco-1/dataset-1_walk_normal_001.bvh", "bandai-namco-1/dataset-1_kick_normal_001.bvh",
+                                       "cmu-hahne-mb/02_05.bvh", "cmu-iclone-cc4/002_05.bvh"};
+
+} // namespace
+
+TEST_CASE("mir: encode -> decode onto the actor's own skeleton reproduces the capture within 1 mm", "[core][corpus]") {
+    for (const char* relative : k_self_captures) {
+        const std::optional<BvhFile> file = read_capture(relative);
+        if (!file) {
+            WARN("missing " << relative);
+            continue;
+        }
+        INFO(relative);
+        Result<RestAnatomy> anatomy = rest_anatomy_build(file->clip, file->body_map);
+        REQUIRE(anatomy.has_value());
+        MirEncoder encoder(file->clip.skeleton, *anatomy);
+        MirDecoder decoder(file->clip.skeleton, *anatomy, file->clip.skeleton.names);
+        MirFrame frame;
+        Pose decoded;
+        double worst = 0.0;
+        // Decoded poses stand on y = 0; the capture stands on its own floor.
+        const Eigen::Vector3d floor(0.0, anatomy->floor_y, 0.0);
+        for (int f = 0; f < file->clip.frame_count(); ++f) {
+            encoder.encode(frame, file->clip.pose(f));
+            decoder.decode(decoded, frame);
+            const auto original = positions_of(file->clip.skeleton, file->clip.pose(f));
+            const auto again = positions_of(file->clip.skeleton, decoded.view());
+            for (size_t joint = 0; joint < original.size(); ++joint) worst = std::max(worst, (original[joint] - floor - again[joint]).norm());
+        }
+        CHECK(worst < 0.001);
+
+        // The whole pipeline, foot locking included, changes nothing on the actor's own skeleton either.
+        RetargetReport report;
+        const Clip self = retarget_clip(report, file->clip, *anatomy, file->clip.skeleton, *anatomy);
+        double worst_clip = 0.0;
+        for (int f = 0; f < self.frame_count(); ++f) {
+            const auto original = positions_of(file->clip.skeleton, file->clip.pose(f));
+            const auto again = positions_of(self.skeleton, self.pose(f));
+            for (size_t joint = 0; joint < original.size(); ++joint) worst_clip = std::max(worst_clip, (original[joint] - floor - again[joint]).norm());
+        }
+        CHECK(worst_clip < 0.001);
+        CHECK(report.limb_extension_error < 1e-6);
+    }
+}
+
+TEST_CASE("mir: the encoding of a mirrored capture is the mirror of its encoding", "[core][corpus]") {
+    // Bandai's rest pose is not exactly symmetric where offsets of different joints' frames add up (the chest sits
+    // 4 mm off the midline), so anatomical frames agree to a degree, not to rounding.
+    constexpr double k_frame_tolerance_rad = 0.03, k_extremity_tolerance = 0.01, k_swivel_tolerance_rad = 0.05;
+    const std::optional<BvhFile> file = read_capture("bandai-namco-1/dataset-1_kick_normal_001.bvh");
+    if (!file) return;
+    Result<MirrorSymmetry> symmetry = mirror_symmetry_find(file->clip.skeleton, file->body_map);
+    REQUIRE(symmetry.has_value());
+    const Clip mirrored = clip_mirror(file->clip, *symmetry);
+    Result<RestAnatomy> anatomy = rest_anatomy_build(file->clip, file->body_map);
+    REQUIRE(anatomy.has_value());
+
+    MirEncoder encoder(file->clip.skeleton, *anatomy);
+    MirFrame original, of_mirrored, mirror_of_original;
+    for (int f = 0; f < file->clip.frame_count(); f += 7) {
+        INFO("frame " << f);
+        encoder.encode(original, file->clip.pose(f));
+        encoder.encode(of_mirrored, mirrored.pose(f));
+        mir_frame_mirror(mirror_of_original, original, *symmetry, file->clip.skeleton.parents);
+        CHECK_THAT(of_mirrored.hip_centre, kumite::test::is_near(mirror_of_original.hip_centre, 1e-3));
+        for (int part = 0; part < k_body_part_count; ++part) {
+            if (!original.has_part[part]) continue;
+            INFO("part " << body_part_name(BodyPart(part)));
+            CHECK_THAT(of_mirrored.part_frames[part], kumite::test::is_near(mirror_of_original.part_frames[part], k_frame_tolerance_rad));
+        }
+        for (int limb = 0; limb < k_limb_count; ++limb) {
+            INFO("limb " << limb);
+            CHECK_THAT(of_mirrored.extremity[limb], kumite::test::is_near(mirror_of_original.extremity[limb], k_extremity_tolerance));
+            CHECK(std::remainder(of_mirrored.swivel[limb] - mirror_of_original.swivel[limb], 2 * 3.14159265358979) ==
+                  Approx(0).margin(k_swivel_tolerance_rad));
+        }
+    }
+}
+
+TEST_CASE("clip_mirror: a right kick becomes a left kick, and twice is the original", "[core][corpus]") {
+    const std::optional<BvhFile> file = read_capture("bandai-namco-1/dataset-1_kick_normal_001.bvh");
+    if (!file) return;
+    Result<MirrorSymmetry> symmetry = mirror_symmetry_find(file->clip.skeleton, file->body_map);
+    REQUIRE(symmetry.has_value());
+    const Clip mirrored = clip_mirror(file->clip, *symmetry);
+    const Clip twice = clip_mirror(mirrored, *symmetry);
+    const int foot_l = file->body_map.joint(BodyPart::foot_l), foot_r = file->body_map.joint(BodyPart::foot_r);
+    const int apex = 60; // the first right kick's apex
+    const auto original = positions_of(file->clip.skeleton, file->clip.pose(apex));
+    const auto reflected = positions_of(mirrored.skeleton, mirrored.pose(apex));
+    CHECK_THAT(reflected[foot_l], kumite::test::is_near(symmetry->reflection * original[foot_r], 1e-6));
+    CHECK(reflected[foot_l].y() > 0.5); // the left foot is up now
+    const auto back = positions_of(twice.skeleton, twice.pose(apex));
+    for (size_t joint = 0; joint < back.size(); ++joint) CHECK_THAT(back[joint], kumite::test::is_near(original[joint], 1e-9));
+}
+
+TEST_CASE("retarget: locomotion, strikes and a CMU capture onto all five characters", "[core][corpus]") {
+    const std::filesystem::path characters = kumite::test::source_dir() / "data/characters";
+    std::vector<std::pair<std::string, BvhFile>> targets;
+    for (const char* name : {"kid", "scout", "brawler", "giant", "runner"}) {
+        Result<BvhFile> character = bvh_read_file(characters / (std::string(name) + ".bvh"));
+        REQUIRE(character.has_value());
+        targets.emplace_back(name, std::move(*character));
+    }
+    for (const char* relative : {"bandai-namco-1/dataset-1_walk_normal_001.bvh", "bandai-namco-1/dataset-1_run_normal_001.bvh",
+                                 "bandai-namco-1/dataset-1_dash_active_001.bvh", "bandai-namco-1/dataset-1_walk-back_sad_001.bvh",
+                                 "bandai-namco-1/dataset-1_walk-left_normal_001.bvh", "bandai-namco-1/dataset-1_walk-right_normal_001.bvh",
+                                 "bandai-namco-1/dataset-1_kick_normal_001.bvh", "bandai-namco-1/dataset-1_punch_normal_001.bvh",
+                                 "bandai-namco-1/dataset-1_punch_normal_002.bvh", "bandai-namco-1/dataset-1_slash_normal_002.bvh",
+                                 "cmu-hahne-mb/02_05.bvh"}) {
+        const std::optional<BvhFile> source = read_capture(relative);
+        if (!source) {
+            WARN("missing " << relative);
+            continue;
+        }
+        Result<RestAnatomy> source_anatomy = rest_anatomy_build(source->clip, source->body_map);
+        REQUIRE(source_anatomy.has_value());
+        for (const auto& [name, character] : targets) {
+            Result<RestAnatomy> target_anatomy = rest_anatomy_build(character.clip, character.body_map);
+            REQUIRE(target_anatomy.has_value());
+            RetargetReport report;
+            const Clip output = retarget_clip(report, source->clip, *source_anatomy, character.clip.skeleton, *target_anatomy);
+            INFO(relative << " onto " << name);
+            CHECK(output.frame_count() == source->clip.frame_count());
+            CHECK(report.contacts > 0);
+            CHECK(report.bone_length_error_m <= 1e-4);
+            CHECK(report.foot_drift_m <= 0.02);
+            CHECK(report.floor_penetration_m <= 0.01);
+            CHECK(report.limb_extension_error <= 0.01);
+        }
+    }
+}
+
+TEST_CASE("rest_anatomy: a skeleton without limbs is refused with the missing part named", "[core]") {
+    Clip clip;
+    clip.skeleton.names = {"Hips", "Spine", "Head"};
+    clip.skeleton.parents = {-1, 0, 1};
+    clip.skeleton.rest_offsets = {Eigen::Vector3d::Zero(), Eigen::Vector3d(0, 0.2, 0), Eigen::Vector3d(0, 0.5, 0)};
+    Result<RestAnatomy> anatomy = rest_anatomy_build(clip, detect_body_map(clip.skeleton));
+    REQUIRE_FALSE(anatomy.has_value());
+    CHECK_THAT(anatomy.error().message, Catch::Contains("body map has no"));
+}
