@@ -121,3 +121,51 @@ TEST_CASE("cli: relative capture paths resolve under --mocap-root", "[cli]") {
                                     file.parent_path().string() + " --json");
     CHECK(result.status == 0);
 }
+
+TEST_CASE("cli: characters --json lists the five shipped characters", "[cli]") {
+    const auto result = run_command(kumite_exe() + " characters --json --characters-dir " +
+                                    (kumite::test::source_dir() / "data/characters").string());
+    REQUIRE(result.status == 0);
+    const nlohmann::json document = nlohmann::json::parse(result.out);
+    REQUIRE(document["characters"].size() == 5);
+    double shortest = 10.0, tallest = 0.0;
+    for (const auto& character : document["characters"]) {
+        for (const char* key : {"name", "file", "height_m", "joints"}) CHECK(character.contains(key));
+        shortest = std::min(shortest, character["height_m"].get<double>());
+        tallest = std::max(tallest, character["height_m"].get<double>());
+    }
+    CHECK(shortest == Approx(1.30).margin(0.05));
+    CHECK(tallest == Approx(2.10).margin(0.05));
+}
+
+TEST_CASE("cli: retarget writes the character's BVH and the report", "[cli][corpus]") {
+    const std::filesystem::path capture = kumite::test::mocap_root() / "bandai-namco-1/dataset-1_walk_normal_001.bvh";
+    if (!std::filesystem::exists(capture)) return;
+    const std::filesystem::path dir = kumite::test::make_temp_dir("retarget");
+    const std::string characters = " --characters-dir " + (kumite::test::source_dir() / "data/characters").string();
+    const auto result = run_command(kumite_exe() + " retarget " + capture.string() + " --character giant -o " +
+                                    (dir / "giant.bvh").string() + " --report " + (dir / "giant.json").string() + characters);
+    REQUIRE(result.status == 0);
+    std::ifstream report_file(dir / "giant.json");
+    const nlohmann::json report = nlohmann::json::parse(report_file);
+    for (const char* key : {"frames", "bone_length_error_m", "foot_drift_m", "floor_penetration_m", "limb_extension_error"}) {
+        CHECK(report.contains(key));
+    }
+    CHECK(report["encode_decode_us"].contains("median"));
+    CHECK(report["encode_decode_us"].contains("p99"));
+    CHECK(report["bone_length_error_m"].get<double>() < 1e-4);
+
+    const auto inspected = run_command(kumite_exe() + " inspect " + (dir / "giant.bvh").string() + " --json");
+    REQUIRE(inspected.status == 0);
+    const nlohmann::json output = nlohmann::json::parse(inspected.out);
+    CHECK(output["joint_names"][0] == "pelvis");
+    CHECK(output["unit"] == "m");
+    CHECK(output["frames"] == report["frames"]);
+
+    CHECK(run_command(kumite_exe() + " retarget " + capture.string() + " --character nobody -o x.bvh" + characters).status == 2);
+    CHECK(run_command(kumite_exe() + " retarget " + capture.string() + " --character kid" + characters).status == 2);
+    const std::filesystem::path broken = write_text("broken.bvh", "HIERARCHY\nROOT x\n{\n");
+    const auto bad = run_command(kumite_exe() + " retarget " + broken.string() + " --character kid -o " + (dir / "b.bvh").string() + characters);
+    CHECK(bad.status == 1);
+    CHECK_FALSE(std::filesystem::exists(dir / "b.bvh"));
+}
