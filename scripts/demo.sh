@@ -14,3 +14,11 @@ build/bin/kumite inspect "$capture"
 echo
 echo "== kumite positions $capture --frames 60 (the apex of the first right kick)"
 build/bin/kumite positions "$capture" --frames 60 | head -n 12
+echo
+echo "== kumite retarget $capture onto every character (output in build/demo/)"
+mkdir -p build/demo
+build/bin/kumite characters
+for character in kid scout brawler runner giant; do
+  build/bin/kumite retarget "$capture" --character "$character" -o "build/demo/kick_$character.bvh" \
+    --report "build/demo/kick_$character.json"
+done

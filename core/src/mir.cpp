@@ -150,8 +150,17 @@ MirDecoder::MirDecoder(const Skeleton& skeleton, const RestAnatomy& anatomy, std
     const int pelvis = map.joint(BodyPart::pelvis);
     for (int joint = skeleton.parents[pelvis]; joint >= 0; joint = skeleton.parents[joint]) m_roles[joint] = Role::above_pelvis;
     m_roles[pelvis] = Role::pelvis;
-    for (int k = 1; k + 1 < anatomy.spine.count; ++k) m_roles[anatomy.spine.joints[k]] = Role::spine;
-    for (int k = 1; k + 1 < anatomy.neck.count; ++k) m_roles[anatomy.neck.joints[k]] = Role::neck;
+    m_chain_index.assign(joints, 0);
+    m_rest_frames_inverse.resize(joints);
+    for (int joint = 0; joint < joints; ++joint) m_rest_frames_inverse[joint] = anatomy.rest_frames[joint].conjugate();
+    for (int k = 1; k + 1 < anatomy.spine.count; ++k) {
+        m_roles[anatomy.spine.joints[k]] = Role::spine;
+        m_chain_index[anatomy.spine.joints[k]] = k;
+    }
+    for (int k = 1; k + 1 < anatomy.neck.count; ++k) {
+        m_roles[anatomy.neck.joints[k]] = Role::neck;
+        m_chain_index[anatomy.neck.joints[k]] = k;
+    }
     for (int joint = 0; joint < joints; ++joint) {
         if (m_roles[joint] == Role::other && m_part_of[joint] >= 0 && anatomy.has_frame[joint]) m_roles[joint] = Role::part;
     }
@@ -187,7 +196,7 @@ void MirDecoder::solve_limb(int limb, const MirFrame& frame, const LimbPins& pin
     // Start from the transferred anatomical frames (they carry the source's twist), then turn each bone onto
     // the solved direction by the smallest rotation.
     auto transferred = [&](BodyPart part, int joint) {
-        return Eigen::Quaterniond(frame.part_frames[static_cast<int>(part)] * m_anatomy.rest_frames[joint].conjugate());
+        return Eigen::Quaterniond(frame.part_frames[static_cast<int>(part)] * m_rest_frames_inverse[joint]);
     };
     const Eigen::Quaterniond upper_initial = transferred(parts[0], chain.root);
     const Eigen::Quaterniond lower_initial = transferred(parts[1], chain.middle);
@@ -241,7 +250,7 @@ void MirDecoder::decode(Pose& pose, const MirFrame& frame, const LimbPins& pins)
         switch (m_roles[joint]) {
         case Role::above_pelvis: m_rotations[joint] = parent_rotation; break;
         case Role::pelvis: {
-            m_rotations[joint] = frame.part_frames[static_cast<int>(BodyPart::pelvis)] * m_anatomy.rest_frames[joint].conjugate();
+            m_rotations[joint] = frame.part_frames[static_cast<int>(BodyPart::pelvis)] * m_rest_frames_inverse[joint];
             // The target stands on y = 0.
             const Eigen::Vector3d hip_centre = Eigen::Vector3d(frame.hip_centre.x() * leg, m_anatomy.ankle_height + frame.hip_centre.y() * leg,
                                                                frame.hip_centre.z() * leg) + pins.hip_shift_world;
@@ -251,24 +260,18 @@ void MirDecoder::decode(Pose& pose, const MirFrame& frame, const LimbPins& pins)
         case Role::spine:
         case Role::neck: {
             const TrunkChain& chain = m_roles[joint] == Role::spine ? m_anatomy.spine : m_anatomy.neck;
-            double fraction = 0.0;
-            int index = 0;
-            for (int k = 0; k < chain.count; ++k) {
-                if (chain.joints[k] == joint) {
-                    fraction = chain.fractions[k];
-                    index = k;
-                }
-            }
+            const int index = m_chain_index[joint];
+            const double fraction = chain.fractions[index];
             const MirChainFrames& frames = m_roles[joint] == Role::spine ? frame.spine : frame.neck;
             // Chains of the same length pair joint for joint (zero-length links make fractions tie); others
             // interpolate by fraction of the chain's length.
             const Eigen::Quaterniond chain_frame = frames.count == chain.count ? frames.frames[index]
                                                                              : chain_frame_at(frames, fraction);
-            m_rotations[joint] = chain_frame * m_anatomy.rest_frames[joint].conjugate();
+            m_rotations[joint] = chain_frame * m_rest_frames_inverse[joint];
             break;
         }
         case Role::part:
-            m_rotations[joint] = frame.part_frames[m_part_of[joint]] * m_anatomy.rest_frames[joint].conjugate();
+            m_rotations[joint] = frame.part_frames[m_part_of[joint]] * m_rest_frames_inverse[joint];
             break;
         case Role::limb_root:
             m_positions[joint] = position;

@@ -100,11 +100,12 @@ Clip retarget_clip(RetargetReport& report, const Clip& source, const RestAnatomy
     report = RetargetReport{};
     const int frames = source.frame_count();
     report.frames = frames;
-    std::vector<double> frame_cost_us(frames, 0.0);
+    std::vector<double> frame_cost_us(frames, 0.0), foot_lock_us(frames, 0.0);
 
     // Encode, keeping what contact detection and the report need from the source.
     MirEncoder encoder(source.skeleton, source_anatomy);
     std::vector<MirFrame> encoded(frames);
+    for (MirFrame& frame : encoded) frame.source_local_rotations.resize(source.skeleton.joint_count()); // not timed
     std::vector<std::vector<Eigen::Vector3d>> source_ankles(2, std::vector<Eigen::Vector3d>(frames));
     std::vector<std::array<double, k_limb_count>> source_extension(frames);
     for (int frame = 0; frame < frames; ++frame) {
@@ -141,6 +142,8 @@ Clip retarget_clip(RetargetReport& report, const Clip& source, const RestAnatomy
     for (int frame = 0; frame < frames; ++frame) {
         const auto start = std::chrono::steady_clock::now();
         decoder.decode(pose, encoded[frame]);
+        frame_cost_us[frame] += microseconds_since(start);
+        const auto lock_start = std::chrono::steady_clock::now();
         LimbPins pins;
         for (int foot = 0; foot < 2; ++foot) {
             const int limb = 2 + foot;
@@ -174,7 +177,7 @@ Clip retarget_clip(RetargetReport& report, const Clip& source, const RestAnatomy
             }
             decoder.decode(pose, encoded[frame], pins);
         }
-        frame_cost_us[frame] += microseconds_since(start);
+        foot_lock_us[frame] = microseconds_since(lock_start);
 
         output.root_translations[frame] = pose.root_translation;
         std::copy(pose.local_rotations.begin(), pose.local_rotations.end(),
@@ -187,6 +190,8 @@ Clip retarget_clip(RetargetReport& report, const Clip& source, const RestAnatomy
     }
     report.encode_decode_us_median = percentile(frame_cost_us, 0.5);
     report.encode_decode_us_p99 = percentile(frame_cost_us, 0.99);
+    report.foot_lock_us_median = percentile(foot_lock_us, 0.5);
+    report.foot_lock_us_p99 = percentile(foot_lock_us, 0.99);
     measure_output(report, output, target_anatomy, contacts, source_extension);
     return output;
 }

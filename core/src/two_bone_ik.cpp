@@ -6,7 +6,15 @@
 namespace kumite {
 
 Eigen::Quaterniond rotation_between(const Eigen::Vector3d& from, const Eigen::Vector3d& to) {
-    return Eigen::Quaterniond::FromTwoVectors(from, to);
+    // q = normalize(1 + a.b, a x b) for unit a, b: no trigonometry. Opposite directions need an explicit axis.
+    const Eigen::Vector3d a = from.normalized(), b = to.normalized();
+    const double dot = a.dot(b);
+    if (dot < -1.0 + 1e-12) {
+        const Eigen::Vector3d axis = orthogonal_reference(a, Eigen::Vector3d::UnitY());
+        return Eigen::Quaterniond(0.0, axis.x(), axis.y(), axis.z());
+    }
+    const Eigen::Vector3d cross = a.cross(b);
+    return Eigen::Quaterniond(1.0 + dot, cross.x(), cross.y(), cross.z()).normalized();
 }
 
 Eigen::Vector3d orthogonal_reference(const Eigen::Vector3d& axis, const Eigen::Vector3d& reference) {

@@ -89,6 +89,8 @@ private:
     std::vector<int> m_source_joint;         // [joint] same-name source joint, or -1
     std::vector<int> m_limb_of_root;         // [joint] limb index when the joint is a limb root, else -1
     std::vector<int> m_part_of;              // [joint] BodyPart index, or -1
+    std::vector<int> m_chain_index;          // [joint] index in its trunk chain (spine/neck roles)
+    std::vector<Eigen::Quaterniond> m_rest_frames_inverse; // [joint] conjugated anatomical rest frames
     std::vector<Eigen::Vector3d> m_positions;
     std::vector<Eigen::Quaterniond> m_rotations;
     std::vector<bool> m_solved;              // [joint] rotation set by a limb solve

@@ -15,8 +15,10 @@ struct RetargetReport {
     double foot_drift_m = 0.0;           // max horizontal distance of a planted ankle from where its contact began
     double floor_penetration_m = 0.0;    // max depth of a foot point (joints and End Sites) below y = 0
     double limb_extension_error = 0.0;   // max | source - output | of |extremity - limb root| / limb length
-    double encode_decode_us_median = 0.0; // per frame, encode + decode (+ foot lock)
+    double encode_decode_us_median = 0.0; // per frame, encode + decode
     double encode_decode_us_p99 = 0.0;
+    double foot_lock_us_median = 0.0;     // per frame, placing pinned feet (a second decode on planted frames)
+    double foot_lock_us_p99 = 0.0;
 };
 
 // `target` supplies the skeleton (its frames are not used). Both anatomies come from rest_anatomy_build.
