@@ -27,8 +27,11 @@ std::filesystem::path resolve_capture_path(const std::filesystem::path& path, co
 // Reads the capture and applies --body-map, or the sidecar FILE.bodymap.json when there is one.
 Result<BvhFile> load_capture(const std::filesystem::path& path, const CaptureOptions& options);
 
-// The default mocap root: $KUMITE_MOCAP_ROOT, else data/mocap in the working directory, else the repository's
-// data/mocap found from the executable (build/bin/kumite -> data/mocap).
+// A data folder: $ENVIRONMENT_VARIABLE, else `relative` in the working directory, else the repository's found
+// from the executable (build/bin/kumite -> data/...), else `relative` as given.
+std::filesystem::path locate_data_folder(const char* environment_variable, const std::filesystem::path& relative);
+
+// $KUMITE_MOCAP_ROOT, else data/mocap (see locate_data_folder).
 std::filesystem::path default_mocap_root();
 
 nlohmann::json json_vec3(const Eigen::Vector3d& v);

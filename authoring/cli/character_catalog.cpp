@@ -1,21 +1,12 @@
 #include "character_catalog.h"
 
+#include "capture_loading.h"
+
 #include <algorithm>
-#include <cstdlib>
 
 namespace kumite::cli {
 
-std::filesystem::path default_characters_dir() {
-    if (const char* folder = std::getenv("KUMITE_CHARACTERS_DIR"); folder && *folder) return folder;
-    std::error_code error;
-    if (std::filesystem::is_directory("data/characters", error)) return "data/characters";
-    const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
-    if (!error) {
-        const std::filesystem::path shipped = executable.parent_path().parent_path().parent_path() / "data/characters";
-        if (std::filesystem::is_directory(shipped, error)) return shipped;
-    }
-    return "data/characters";
-}
+std::filesystem::path default_characters_dir() { return locate_data_folder("KUMITE_CHARACTERS_DIR", "data/characters"); }
 
 std::vector<CharacterEntry> list_characters(const std::filesystem::path& folder) {
     std::vector<CharacterEntry> entries;

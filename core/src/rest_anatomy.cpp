@@ -8,17 +8,22 @@
 namespace kumite {
 namespace {
 
-// Columns: first axis = `secondary` made orthogonal to `bone`, second = bone, third = first x second.
-// When secondary is nearly parallel to the bone, `fallback` takes its place.
-Eigen::Matrix3d frame_from(const Eigen::Vector3d& bone, const Eigen::Vector3d& secondary, const Eigen::Vector3d& fallback) {
-    const Eigen::Vector3d y = bone.normalized();
-    Eigen::Vector3d s = std::abs(y.dot(secondary.normalized())) < 0.95 ? secondary : fallback;
-    const Eigen::Vector3d x = (s - s.dot(y) * y).normalized();
+// A right-handed frame whose column `exact_column` (0 or 1) points along `exact` and whose other column of the
+// first two is `other` made orthogonal to it; the third is the cross product of the first two.
+Eigen::Matrix3d frame_with(int exact_column, const Eigen::Vector3d& exact, const Eigen::Vector3d& other) {
+    const Eigen::Vector3d e = exact.normalized();
+    const Eigen::Vector3d o = (other - other.dot(e) * e).normalized();
     Eigen::Matrix3d frame;
-    frame.col(0) = x;
-    frame.col(1) = y;
-    frame.col(2) = x.cross(y);
+    frame.col(exact_column) = e;
+    frame.col(1 - exact_column) = o;
+    frame.col(2) = frame.col(0).cross(frame.col(1));
     return frame;
+}
+
+// Limb frame: the bone as second column, `secondary` (or `fallback` when nearly parallel) as the first.
+Eigen::Matrix3d frame_from(const Eigen::Vector3d& bone, const Eigen::Vector3d& secondary, const Eigen::Vector3d& fallback) {
+    const bool parallel = std::abs(bone.normalized().dot(secondary.normalized())) >= 0.95;
+    return frame_with(1, bone, parallel ? fallback : secondary);
 }
 
 // Rest-pose vector from a joint to one of its descendants (identity rotations: offsets add up).
@@ -119,15 +124,7 @@ Result<RestAnatomy> rest_anatomy_build(const Clip& clip, const BodyMap& map) {
         }
         return Eigen::Vector3d(p[next] - p[from]);
     };
-    auto trunk_frame_from = [&](const Eigen::Vector3d& left_axis, const Eigen::Vector3d& up_axis) {
-        const Eigen::Vector3d left = left_axis.normalized();
-        const Eigen::Vector3d trunk_up = (up_axis - up_axis.dot(left) * left).normalized();
-        Eigen::Matrix3d frame;
-        frame.col(0) = left;
-        frame.col(1) = trunk_up;
-        frame.col(2) = left.cross(trunk_up);
-        return frame;
-    };
+    auto trunk_frame_from = [](const Eigen::Vector3d& left, const Eigen::Vector3d& up) { return frame_with(0, left, up); };
     const int pelvis = map.joint(BodyPart::pelvis), chest = map.joint(BodyPart::chest), head = map.joint(BodyPart::head);
     const Eigen::Matrix3d hips_frame =
         trunk_frame_from(side_axis(pelvis, map.joint(BodyPart::thigh_l), map.joint(BodyPart::thigh_r)), trunk_direction(pelvis, chest));
