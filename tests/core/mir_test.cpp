@@ -72,9 +72,8 @@ TEST_CASE("mir: encode -> decode onto the actor's own skeleton reproduces the ca
 }
 
 TEST_CASE("mir: the encoding of a mirrored capture is the mirror of its encoding", "[core][corpus]") {
-    // Bandai's rest pose is not exactly symmetric where offsets of different joints' frames add up (the chest sits
-    // 4 mm off the midline), so anatomical frames agree to a degree, not to rounding.
-    constexpr double k_frame_tolerance_rad = 0.03, k_extremity_tolerance = 0.01, k_swivel_tolerance_rad = 0.05;
+    // Bandai's offsets are symmetric to the micrometre, not to rounding, so the two agree to about 1e-6.
+    constexpr double k_frame_tolerance_rad = 1e-3, k_extremity_tolerance = 1e-4, k_swivel_tolerance_rad = 1e-3;
     const std::optional<BvhFile> file = read_capture("bandai-namco-1/dataset-1_kick_normal_001.bvh");
     if (!file) return;
     Result<MirrorSymmetry> symmetry = mirror_symmetry_find(file->clip.skeleton, file->body_map);
