@@ -26,4 +26,7 @@ int run_characters(int argc, char** argv);
 const CommandSpec& retarget_spec();
 int run_retarget(int argc, char** argv);
 
+const CommandSpec& suggest_spec();
+int run_suggest(int argc, char** argv);
+
 } // namespace kumite::cli

@@ -169,3 +169,30 @@ TEST_CASE("cli: retarget writes the character's BVH and the report", "[cli][corp
     CHECK(bad.status == 1);
     CHECK_FALSE(std::filesystem::exists(dir / "b.bvh"));
 }
+
+TEST_CASE("cli: suggest --json lists strikes with the contract's keys", "[cli][corpus]") {
+    const std::filesystem::path kick = kumite::test::mocap_root() / "bandai-namco-1/dataset-1_kick_normal_001.bvh";
+    const std::filesystem::path punch = kumite::test::mocap_root() / "bandai-namco-1/dataset-1_punch_normal_002.bvh";
+    if (!std::filesystem::exists(kick) || !std::filesystem::exists(punch)) return;
+    const auto one = run_command(kumite_exe() + " suggest " + kick.string() + " --json");
+    REQUIRE(one.status == 0);
+    const nlohmann::json strikes = nlohmann::json::parse(one.out)["strikes"];
+    REQUIRE(strikes.size() == 3);
+    for (const char* key : {"semantics", "segment", "side", "hit_frame", "first", "last", "confidence"}) CHECK(strikes[0].contains(key));
+    CHECK(strikes[0]["semantics"] == "kick");
+    CHECK(strikes[0]["segment"] == "foot_r");
+    CHECK(strikes[0]["side"] == "right");
+
+    const auto two = run_command(kumite_exe() + " suggest " + kick.string() + " " + punch.string() + " --json");
+    REQUIRE(two.status == 0);
+    const nlohmann::json files = nlohmann::json::parse(two.out)["files"];
+    REQUIRE(files.size() == 2);
+    CHECK(files[1]["strikes"].size() == 5);
+
+    const auto reach = run_command(kumite_exe() + " suggest " + punch.string() + " --segment hand_r --json");
+    REQUIRE(reach.status == 0);
+    const nlohmann::json reaches = nlohmann::json::parse(reach.out)["strikes"];
+    CHECK(reaches.size() >= 5);
+    if (!reaches.empty()) CHECK(reaches[0]["semantics"] == "reach");
+    CHECK(run_command(kumite_exe() + " suggest " + punch.string() + " --segment elbow").status == 2);
+}

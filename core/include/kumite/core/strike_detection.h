@@ -1,0 +1,43 @@
+#pragma once
+// Strike suggestions from a capture alone, for the animator to confirm.
+//
+// The rule, per limb, on the pose's own anatomy (so any size, unit or rest convention works):
+// - punch: the hand's extension |wrist - shoulder| / arm length peaks above 0.85 with the hand away from the chest
+//   (more than 0.6 arm length on the floor plane: fighters stand bladed, so not necessarily where the chest
+//   faces), no lower than 0.3 arm length below the shoulder and not behind it along the hips' heading, and not
+//   during a kick (arms fly out for balance then), after the hand moved at 1.5 arm lengths per second or more in the 0.3 s before; the hit frame is the
+//   extension peak (full extension, where the hand's speed falls to a minimum);
+// - kick: the ankle rises above 0.35 leg length over its standing height in front of the hip (forward reach above
+//   0.3 leg length); the hit frame is the ankle's highest point;
+// - reach (any part asked for by name): peaks of the part's distance from the pelvis, relative to its rest
+//   distance, that stand 0.1 above the valleys on both sides.
+// Peaks closer than 0.3 s keep the stronger. A strike spans from the extension valley before the hit to the one
+// after (at most 1 s each way). Confidence grows with how far the peak clears its thresholds.
+
+#include "kumite/core/body_map.h"
+#include "kumite/core/rest_anatomy.h"
+
+#include <optional>
+#include <vector>
+
+namespace kumite {
+
+enum class StrikeSemantics { punch, kick, reach };
+
+struct StrikeSuggestion {
+    StrikeSemantics semantics = StrikeSemantics::punch;
+    BodyPart segment = BodyPart::hand_r;
+    Side side = Side::right;
+    int hit_frame = 0;
+    int first_frame = 0;
+    int last_frame = 0;
+    double confidence = 0.0; // 0..1
+};
+
+// With `segment`, reports reach peaks of that part instead of punches and kicks.
+std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy& anatomy,
+                                             std::optional<BodyPart> segment = std::nullopt);
+
+const char* strike_semantics_name(StrikeSemantics semantics);
+
+} // namespace kumite
