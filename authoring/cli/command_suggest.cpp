@@ -3,6 +3,7 @@
 #include "capture_loading.h"
 #include "commands.h"
 #include "kumite/core/strike_detection.h"
+#include "kumite/formats/annotation_file.h"
 
 #include <iomanip>
 #include <iostream>
@@ -15,9 +16,11 @@ const CommandSpec& suggest_spec() {
         "FILE.bvh... [--segment PART] [--json]",
         "Proposes the strikes in captures: punches (hand extension peaks in front of the chest after a fast\n"
         "move) and kicks (ankle raised in front of the hip), each with its hit frame and span. With --segment\n"
-        "PART, reports the extension peaks of that body part instead (semantics 'reach').",
+        "PART, reports the extension peaks of that body part instead (semantics 'reach'). --write-annotations\n"
+        "turns every suggestion into a clip (mirrored too), with paths relative to --mocap-root when under it.",
         1, 100000,
         {{"segment", "PART", "a body part (hand_l, foot_r, head, ...): report its extension peaks"},
+         {"write-annotations", "OUT.json", "write every suggestion as a clip of an annotation file ready for bake"},
          unit_flag(), mocap_root_flag(), body_map_flag(), json_flag()}};
     return spec;
 }
@@ -38,6 +41,31 @@ nlohmann::json strikes_json(const std::vector<StrikeSuggestion>& strikes) {
     return list;
 }
 
+// `path` relative to the mocap root when it lies under it, else as given.
+std::string source_relative_to_root(const std::filesystem::path& path, const std::filesystem::path& root) {
+    std::error_code error;
+    const std::filesystem::path absolute = std::filesystem::weakly_canonical(path, error);
+    const std::filesystem::path absolute_root = std::filesystem::weakly_canonical(root, error);
+    const std::filesystem::path relative = absolute.lexically_relative(absolute_root);
+    if (!error && !relative.empty() && *relative.begin() != "..") return relative.generic_string();
+    return path.generic_string();
+}
+
+RawAnnotatedClip clip_from_suggestion(const StrikeSuggestion& strike, const std::string& source) {
+    RawAnnotatedClip clip;
+    clip.source = source;
+    clip.name = std::filesystem::path(source).stem().string() + "_" + std::string(body_part_name(strike.segment)) + "_" +
+                std::to_string(strike.hit_frame);
+    clip.first_frame = strike.first_frame;
+    clip.last_frame = strike.last_frame;
+    clip.semantics = strike_semantics_name(strike.semantics);
+    clip.segment = strike.segment;
+    clip.side = strike.side;
+    clip.hit_frame = strike.hit_frame;
+    clip.mirror = true; // the captures hold one side of most strikes; the mirror gives the other
+    return clip;
+}
+
 } // namespace
 
 int run_suggest(int argc, char** argv) {
@@ -52,6 +80,7 @@ int run_suggest(int argc, char** argv) {
     }
 
     nlohmann::json files = nlohmann::json::array();
+    RawAnnotations annotations;
     for (const std::string& path : arguments.positionals) {
         Result<BvhFile> file = load_capture(path, *options);
         if (!file) return input_error(file.error().message);
@@ -59,6 +88,12 @@ int run_suggest(int argc, char** argv) {
         if (!anatomy) return input_error(path + ": " + anatomy.error().message);
         const std::vector<StrikeSuggestion> strikes = strikes_detect(file->clip, *anatomy, segment);
         files.push_back({{"file", path}, {"strikes", strikes_json(strikes)}});
+        const std::string source = source_relative_to_root(resolve_capture_path(path, options->mocap_root), options->mocap_root);
+        for (const StrikeSuggestion& strike : strikes) annotations.clips.push_back(clip_from_suggestion(strike, source));
+    }
+    if (const std::optional<std::string> output = arguments.value("write-annotations")) {
+        if (Result<void> valid = annotations.validate(*output); !valid) return input_error(valid.error().message);
+        if (Result<void> written = annotations_write_file(*output, annotations); !written) return input_error(written.error().message);
     }
 
     if (arguments.has("json")) {

@@ -195,4 +195,16 @@ TEST_CASE("cli: suggest --json lists strikes with the contract's keys", "[cli][c
     CHECK(reaches.size() >= 5);
     if (!reaches.empty()) CHECK(reaches[0]["semantics"] == "reach");
     CHECK(run_command(kumite_exe() + " suggest " + punch.string() + " --segment elbow").status == 2);
+
+    // Batch pre-annotation: every suggestion becomes a clip, with paths relative to the mocap root.
+    const std::filesystem::path annotations = kumite::test::make_temp_dir("suggest") / "suggested.json";
+    const auto written = run_command(kumite_exe() + " suggest bandai-namco-1/dataset-1_kick_normal_001.bvh --mocap-root " +
+                                     kumite::test::mocap_root().string() + " --write-annotations " + annotations.string());
+    REQUIRE(written.status == 0);
+    std::ifstream annotation_file(annotations);
+    const nlohmann::json document = nlohmann::json::parse(annotation_file);
+    REQUIRE(document["clips"].size() == 3);
+    CHECK(document["clips"][0]["source"] == "bandai-namco-1/dataset-1_kick_normal_001.bvh");
+    CHECK(document["clips"][0]["hit_frame"] == 60);
+    CHECK(document["clips"][0]["mirror"] == true);
 }
