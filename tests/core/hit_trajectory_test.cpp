@@ -1,0 +1,38 @@
+#include "kumite/core/hit_trajectory.h"
+#include "kumite/formats/bvh_reader.h"
+#include "support/pose_matchers.h"
+#include "support/test_paths.h"
+
+using namespace kumite;
+using kumite::test::is_near;
+
+TEST_CASE("heading_frame: facing +X puts the heading's +Z on world +X", "[core]") {
+    const HeadingFrame frame = heading_frame_from(Eigen::Vector3d(1.0, 0.9, 2.0), Eigen::Vector3d(1.0, -0.3, 0.0));
+    CHECK_THAT(frame.to_world(Eigen::Vector3d(0, 0, 1)), is_near(Eigen::Vector3d(2.0, 0.0, 2.0), 1e-12));
+    // World +Z is this character's right (left is up x facing = -Z), so it maps to heading -X.
+    CHECK_THAT(frame.to_heading(Eigen::Vector3d(1.0, 1.5, 2.5)), is_near(Eigen::Vector3d(-0.5, 1.5, 0.0), 1e-12));
+    const Eigen::Vector3d p(-0.3, 0.4, 7.0);
+    CHECK_THAT(frame.to_world(frame.to_heading(p)), is_near(p, 1e-12));
+}
+
+TEST_CASE("hit_trajectory: a right kick rises in front of its start poses, inside its box", "[core][corpus]") {
+    const std::filesystem::path path = kumite::test::mocap_root() / "bandai-namco-1/dataset-1_kick_normal_001.bvh";
+    if (!std::filesystem::exists(path)) return;
+    Result<BvhFile> file = bvh_read_file(path);
+    REQUIRE(file.has_value());
+    Result<RestAnatomy> anatomy = rest_anatomy_build(file->clip, file->body_map);
+    REQUIRE(anatomy.has_value());
+    const int foot = file->body_map.joint(BodyPart::foot_r);
+    const HitTrajectory trajectory = hit_trajectory_compute(file->clip, *anatomy, foot, 30, 60, 87);
+    REQUIRE(trajectory.from_start.size() == 30);
+    CHECK(trajectory.from_start[0].size() == 58);
+    CHECK(trajectory.from_start[29].size() == 29);
+    for (size_t start = 0; start < trajectory.from_start.size(); ++start) {
+        const Eigen::Vector3d at_hit = trajectory.from_start[start][60 - 30 - start];
+        INFO("start " << start);
+        CHECK(at_hit.z() > 0.3);  // in front of the body
+        CHECK(at_hit.y() > 0.5);  // foot raised well above the floor
+        for (const Eigen::Vector3d& point : trajectory.from_start[start]) CHECK(trajectory.box_in_heading.contains(point));
+    }
+    CHECK(trajectory.box_in_heading.distance_to(Eigen::Vector3d(0, 0.8, 5.0)) > 3.0);
+}
