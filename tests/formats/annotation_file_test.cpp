@@ -1,8 +1,11 @@
 #include "kumite/formats/annotation_file.h"
+#include "kumite/formats/bvh_reader.h"
 #include "support/test_paths.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
+
+#include <set>
 
 using namespace kumite;
 
@@ -83,4 +86,32 @@ TEST_CASE("annotation_file: files are written atomically and read back", "[forma
     REQUIRE(read.has_value());
     CHECK(read->clips.size() == 2);
     CHECK_FALSE(annotations_read_file(path.parent_path() / "missing.json").has_value());
+}
+
+TEST_CASE("annotation_file: the reference annotations fit their captures", "[formats][corpus]") {
+    Result<RawAnnotations> annotations = annotations_read_file(kumite::test::source_dir() / "data/annotations/reference.json");
+    REQUIRE(annotations.has_value());
+    int strikes = 0;
+    std::set<std::pair<std::string, Side>> kinds;
+    std::set<std::string> motions;
+    for (const RawAnnotatedClip& clip : annotations->clips) {
+        motions.insert(clip.semantics);
+        if (clip.is_strike()) {
+            strikes += clip.mirror ? 2 : 1;
+            kinds.insert({clip.semantics, clip.side});
+            if (clip.mirror) kinds.insert({clip.semantics, clip.side == Side::left ? Side::right : Side::left});
+        }
+        const std::filesystem::path capture = kumite::test::mocap_root() / clip.source;
+        if (!std::filesystem::exists(capture)) continue;
+        Result<BvhFile> file = bvh_read_file(capture);
+        REQUIRE(file.has_value());
+        INFO(clip.name);
+        CHECK(raw_clip_validate_frames(clip, file->clip.frame_count()).has_value());
+    }
+    CHECK(strikes >= 60);
+    for (const char* semantics : {"punch", "kick"}) {
+        CHECK(kinds.count({semantics, Side::left}) == 1);
+        CHECK(kinds.count({semantics, Side::right}) == 1);
+    }
+    for (const char* motion : {"rest", "step_forward", "step_back", "step_left", "step_right"}) CHECK(motions.count(motion) == 1);
 }
