@@ -38,7 +38,7 @@ Eigen::Quaterniond MirrorSymmetry::mirror_local_rotation(int joint, const Eigen:
     return Eigen::Quaterniond(Eigen::Matrix3d(before * partner_rotation.toRotationMatrix() * local_reflections[joint])).normalized();
 }
 
-Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, const BodyMap& map, double tolerance_m) {
+Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, double tolerance_m) {
     const int joints = skeleton.joint_count();
     MirrorSymmetry symmetry;
     symmetry.partner.assign(joints, -1);
@@ -64,10 +64,6 @@ Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, const Body
         }
     }
 
-    // The pelvis and the joints above it carry the root motion: their own offsets need not be symmetric.
-    std::vector<bool> carries_root_motion(joints, false);
-    for (int joint = map.joint(BodyPart::pelvis); joint >= 0; joint = skeleton.parents[joint]) carries_root_motion[joint] = true;
-
     symmetry.local_reflections.assign(joints, symmetry.reflection);
     for (int joint = 0; joint < joints; ++joint) {
         const auto pairs = child_offset_pairs(skeleton, symmetry.partner, joint);
@@ -90,7 +86,6 @@ Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, const Body
         }
         symmetry.local_reflections[joint] = *found;
     }
-    (void)carries_root_motion;
     return symmetry;
 }
 

@@ -76,7 +76,7 @@ TEST_CASE("mir: the encoding of a mirrored capture is the mirror of its encoding
     constexpr double k_frame_tolerance_rad = 1e-3, k_extremity_tolerance = 1e-4, k_swivel_tolerance_rad = 1e-3;
     const std::optional<BvhFile> file = read_capture("bandai-namco-1/dataset-1_kick_normal_001.bvh");
     if (!file) return;
-    Result<MirrorSymmetry> symmetry = mirror_symmetry_find(file->clip.skeleton, file->body_map);
+    Result<MirrorSymmetry> symmetry = mirror_symmetry_find(file->clip.skeleton);
     REQUIRE(symmetry.has_value());
     const Clip mirrored = clip_mirror(file->clip, *symmetry);
     Result<RestAnatomy> anatomy = rest_anatomy_build(file->clip, file->body_map);
@@ -107,7 +107,7 @@ TEST_CASE("mir: the encoding of a mirrored capture is the mirror of its encoding
 TEST_CASE("clip_mirror: a right kick becomes a left kick, and twice is the original", "[core][corpus]") {
     const std::optional<BvhFile> file = read_capture("bandai-namco-1/dataset-1_kick_normal_001.bvh");
     if (!file) return;
-    Result<MirrorSymmetry> symmetry = mirror_symmetry_find(file->clip.skeleton, file->body_map);
+    Result<MirrorSymmetry> symmetry = mirror_symmetry_find(file->clip.skeleton);
     REQUIRE(symmetry.has_value());
     const Clip mirrored = clip_mirror(file->clip, *symmetry);
     const Clip twice = clip_mirror(mirrored, *symmetry);

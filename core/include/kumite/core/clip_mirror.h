@@ -25,7 +25,7 @@ struct MirrorSymmetry {
 
 // Finds partners and reflections; an error names the first joint without a partner or out of symmetry
 // (offsets differing by more than `tolerance_m`).
-Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, const BodyMap& body_map, double tolerance_m = 1e-3);
+Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, double tolerance_m = 1e-3);
 
 
 Clip clip_mirror(const Clip& clip, const MirrorSymmetry& symmetry);
