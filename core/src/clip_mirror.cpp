@@ -3,6 +3,7 @@
 #include "kumite/core/forward_kinematics.h"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 
 namespace kumite {
@@ -38,7 +39,7 @@ Eigen::Quaterniond MirrorSymmetry::mirror_local_rotation(int joint, const Eigen:
     return Eigen::Quaterniond(Eigen::Matrix3d(before * partner_rotation.toRotationMatrix() * local_reflections[joint])).normalized();
 }
 
-Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, double tolerance_m) {
+Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, double tolerance_m, double direction_tolerance) {
     const int joints = skeleton.joint_count();
     MirrorSymmetry symmetry;
     symmetry.partner.assign(joints, -1);
@@ -67,19 +68,36 @@ Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, double tol
     symmetry.local_reflections.assign(joints, symmetry.reflection);
     for (int joint = 0; joint < joints; ++joint) {
         const auto pairs = child_offset_pairs(skeleton, symmetry.partner, joint);
-        auto fits = [&](const Eigen::Matrix3d& candidate) {
+        // Real bodies are not exactly symmetric: offsets pair up by direction; their lengths may differ. A
+        // candidate's misfit is its worst direction error (infinite when a short offset meets a long one).
+        auto misfit = [&](const Eigen::Matrix3d& candidate) {
+            double worst = 0.0;
             for (const auto& [own, theirs] : pairs) {
-                if ((candidate * own - theirs).norm() > tolerance_m) return false;
+                const bool own_short = own.norm() <= tolerance_m, theirs_short = theirs.norm() <= tolerance_m;
+                if (own_short != theirs_short) return std::numeric_limits<double>::infinity();
+                if (!own_short) worst = std::max(worst, (candidate * own.normalized() - theirs.normalized()).norm());
             }
-            return true;
+            return worst;
         };
         std::vector<Eigen::Matrix3d> candidates;
         for (const auto& [own, theirs] : pairs) {
-            if ((own - theirs).norm() > tolerance_m) candidates.push_back(householder(own - theirs));
+            if (own.norm() <= tolerance_m || theirs.norm() <= tolerance_m) continue;
+            const Eigen::Vector3d normal = own.normalized() - theirs.normalized();
+            if (normal.norm() > direction_tolerance) candidates.push_back(householder(normal)); // else the parent's may do
         }
         candidates.push_back(joint > 0 ? symmetry.local_reflections[skeleton.parents[joint]] : symmetry.reflection);
         for (int axis = 0; axis < 3; ++axis) candidates.push_back(householder(Eigen::Vector3d::Unit(axis)));
-        const auto found = std::find_if(candidates.begin(), candidates.end(), fits);
+        // The best fit wins (a bone on the mirror plane fits several reflections loosely, the right one
+        // closely); exact ties go to the earlier candidate, the parent's reflection before the axes.
+        auto found = candidates.end();
+        double best = direction_tolerance;
+        for (auto candidate = candidates.begin(); candidate != candidates.end(); ++candidate) {
+            const double error = misfit(*candidate);
+            if (error < best - 1e-12 || (found == candidates.end() && error <= best)) {
+                best = error;
+                found = candidate;
+            }
+        }
         if (found == candidates.end()) {
             return make_error(ErrorCode::invalid, "the joints below " + skeleton.names[joint] + " and " +
                                                       skeleton.names[symmetry.partner[joint]] + " are not mirror images");

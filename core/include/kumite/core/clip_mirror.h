@@ -3,7 +3,7 @@
 // the side marks of the names), reflected in the world across the plane x = 0. Rest poses need not be physical
 // (Bandai's puts the hips' left-right axis along Y and the chest's along Z), so each joint has its own local
 // reflection, found from its children's offsets: a local rotation q becomes R_parent q_partner R_joint. The
-// skeleton must be symmetric: those reflections must map every child offset onto its partner's. The result is a
+// skeleton must be symmetric: those reflections must map every child offset's direction onto its partner's. The result is a
 // clip on the same skeleton where a right kick becomes a left kick.
 
 #include "kumite/core/body_map.h"
@@ -23,10 +23,12 @@ struct MirrorSymmetry {
     Eigen::Quaterniond mirror_local_rotation(int joint, const Eigen::Quaterniond& partner_rotation, int parent) const;
 };
 
-// Finds partners and reflections; an error names the first joint without a partner or out of symmetry
-// (offsets differing by more than `tolerance_m`).
-Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, double tolerance_m = 1e-3);
-
+// Finds partners and reflections; an error names the first joint without a partner or out of symmetry. Offsets
+// pair up by direction: the reflected direction must land within `direction_tolerance` (about radians) of the
+// partner's, and an offset shorter than `tolerance_m` must have a short partner. Lengths may differ: captured
+// skeletons are measured on real, slightly asymmetric bodies (CMU's finger bases differ by 10%); the mirrored
+// motion keeps each side's own bone lengths.
+Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, double tolerance_m = 1e-3, double direction_tolerance = 0.1);
 
 Clip clip_mirror(const Clip& clip, const MirrorSymmetry& symmetry);
 
