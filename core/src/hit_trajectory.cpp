@@ -20,6 +20,22 @@ HeadingFrame pose_heading(const Skeleton&, const RestAnatomy& anatomy, std::span
     return heading_frame_from(positions[pelvis], facing, anatomy.floor_y);
 }
 
+HitTrajectory hit_trajectory_from(std::vector<Eigen::Vector3d> hit_points, std::vector<HeadingFrame> headings, int hit_frame) {
+    assert(hit_points.size() == headings.size() && 0 <= hit_frame && hit_frame < static_cast<int>(hit_points.size()));
+    HitTrajectory trajectory;
+    trajectory.hit_frame = hit_frame;
+    trajectory.hit_points = std::move(hit_points);
+    trajectory.headings = std::move(headings);
+    trajectory.start_boxes.resize(hit_frame);
+    for (int start = 0; start < hit_frame; ++start) {
+        AlignedBox& box = trajectory.start_boxes[start];
+        for (int frame = start; frame <= hit_frame; ++frame) box.extend(trajectory.point_from(start, frame));
+        trajectory.box_in_heading.extend(box.min);
+        trajectory.box_in_heading.extend(box.max);
+    }
+    return trajectory;
+}
+
 HitTrajectory hit_trajectory_compute(const Clip& clip, const RestAnatomy& anatomy, int hit_joint, int first_frame, int hit_frame,
                                      int last_frame) {
     assert(0 <= first_frame && first_frame <= hit_frame && hit_frame <= last_frame && last_frame < clip.frame_count());
@@ -33,20 +49,7 @@ HitTrajectory hit_trajectory_compute(const Clip& clip, const RestAnatomy& anatom
         hit_points.push_back(positions[hit_joint]);
         headings.push_back(pose_heading(skeleton, anatomy, positions, rotations));
     }
-    HitTrajectory trajectory;
-    trajectory.first_frame = first_frame;
-    trajectory.hit_frame = hit_frame;
-    trajectory.last_frame = last_frame;
-    for (int start = first_frame; start < std::max(hit_frame, first_frame + 1); ++start) {
-        const HeadingFrame& heading = headings[start - first_frame];
-        std::vector<Eigen::Vector3d> path;
-        for (int frame = start; frame <= last_frame; ++frame) {
-            path.push_back(heading.to_heading(hit_points[frame - first_frame]));
-            trajectory.box_in_heading.extend(path.back());
-        }
-        trajectory.from_start.push_back(std::move(path));
-    }
-    return trajectory;
+    return hit_trajectory_from(std::move(hit_points), std::move(headings), hit_frame - first_frame);
 }
 
 } // namespace kumite

@@ -24,15 +24,18 @@ TEST_CASE("hit_trajectory: a right kick rises in front of its start poses, insid
     REQUIRE(anatomy.has_value());
     const int foot = file->body_map.joint(BodyPart::foot_r);
     const HitTrajectory trajectory = hit_trajectory_compute(file->clip, *anatomy, foot, 30, 60, 87);
-    REQUIRE(trajectory.from_start.size() == 30);
-    CHECK(trajectory.from_start[0].size() == 58);
-    CHECK(trajectory.from_start[29].size() == 29);
-    for (size_t start = 0; start < trajectory.from_start.size(); ++start) {
-        const Eigen::Vector3d at_hit = trajectory.from_start[start][60 - 30 - start];
+    REQUIRE(trajectory.hit_frame == 30);
+    REQUIRE(trajectory.hit_points.size() == 58);
+    REQUIRE(trajectory.start_boxes.size() == 30);
+    for (int start = 0; start < 30; ++start) {
+        const Eigen::Vector3d at_hit = trajectory.point_from(start, 30);
         INFO("start " << start);
         CHECK(at_hit.z() > 0.3);  // in front of the body
         CHECK(at_hit.y() > 0.5);  // foot raised well above the floor
-        for (const Eigen::Vector3d& point : trajectory.from_start[start]) CHECK(trajectory.box_in_heading.contains(point));
+        for (int frame = start; frame <= 30; ++frame) {
+            CHECK(trajectory.start_boxes[start].contains(trajectory.point_from(start, frame)));
+            CHECK(trajectory.box_in_heading.contains(trajectory.point_from(start, frame)));
+        }
     }
     CHECK(trajectory.box_in_heading.distance_to(Eigen::Vector3d(0, 0.8, 5.0)) > 3.0);
 }

@@ -27,17 +27,25 @@ struct AlignedBox {
     double distance_to(const Eigen::Vector3d& point) const; // 0 inside
 };
 
+// Over a clip's frames: the hit joint's world positions and each frame's heading frame.
 struct HitTrajectory {
-    int first_frame = 0;                                    // candidate starts: first_frame .. hit_frame - 1
     int hit_frame = 0;
-    int last_frame = 0;
-    std::vector<std::vector<Eigen::Vector3d>> from_start;  // [start - first_frame][t - start], metres, heading frame
-    AlignedBox box_in_heading;                              // over every start and frame
+    std::vector<Eigen::Vector3d> hit_points;  // [frame] world, metres
+    std::vector<HeadingFrame> headings;       // [frame]
+    std::vector<AlignedBox> start_boxes;      // [start < hit_frame] the path start..hit_frame in start's heading frame
+    AlignedBox box_in_heading;                // union of the start boxes
+
+    // The hit joint at `frame` seen from the heading frame of `start`.
+    Eigen::Vector3d point_from(int start, int frame) const { return headings[start].to_heading(hit_points[frame]); }
 };
 
-// `hit_joint` is the hit segment's joint; frames are clip frames with first <= hit <= last.
-HitTrajectory hit_trajectory_compute(const Clip& clip, const RestAnatomy& anatomy, int hit_joint, int first_frame,
-                                     int hit_frame, int last_frame);
+// Fills the boxes from the points and headings (same length, hit_frame inside).
+HitTrajectory hit_trajectory_from(std::vector<Eigen::Vector3d> hit_points, std::vector<HeadingFrame> headings, int hit_frame);
+
+// From a clip: forward kinematics over frames first..last, `hit_joint` the hit segment's joint; frames in the
+// result count from `first_frame`.
+HitTrajectory hit_trajectory_compute(const Clip& clip, const RestAnatomy& anatomy, int hit_joint, int first_frame, int hit_frame,
+                                     int last_frame);
 
 // The heading frame of a pose of this skeleton (pelvis on the floor, facing the hips' forward).
 HeadingFrame pose_heading(const Skeleton& skeleton, const RestAnatomy& anatomy, std::span<const Eigen::Vector3d> model_positions,
