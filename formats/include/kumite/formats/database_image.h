@@ -73,7 +73,8 @@ private:
     std::vector<DatabaseSection> m_sections;
 };
 
-// FNV-1a, 64 bits: the content hash over every byte after the header.
+// The content hash over every byte after the header: FNV-1a on 64-bit words in four lanes, finalised
+// (formats/README.md gives the exact steps).
 std::uint64_t database_content_hash(std::span<const std::byte> bytes);
 
 } // namespace kumite
