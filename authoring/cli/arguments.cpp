@@ -1,5 +1,7 @@
 #include "arguments.h"
 
+#include <charconv>
+
 #include <algorithm>
 #include <iostream>
 
@@ -15,12 +17,26 @@ std::optional<std::string> Arguments::value(const std::string& flag) const {
     return found->second;
 }
 
+Result<long long> Arguments::integer(const std::string& flag, long long min, long long max, long long fallback) const {
+    const std::optional<std::string> text = value(flag);
+    if (!text) return fallback;
+    long long number = 0;
+    const char* end = text->data() + text->size();
+    const auto [rest, error] = std::from_chars(text->data(), end, number);
+    if (error != std::errc() || rest != end || number < min || number > max) {
+        return make_error(ErrorCode::invalid, "--" + flag + " must be a whole number from " + std::to_string(min) + " to " +
+                                                  std::to_string(max) + ", not '" + *text + "'");
+    }
+    return number;
+}
+
 Result<ParseOutcome> parse_arguments(const CommandSpec& spec, int argc, char** argv) {
     ParseOutcome outcome;
     Arguments& arguments = outcome.arguments;
     bool only_positionals = false;
     for (int i = 0; i < argc; ++i) {
-        const std::string argument = argv[i];
+        std::string argument = argv[i];
+        if (argument == "-o" && !only_positionals) argument = "--output"; // the short form every tool knows
         if (only_positionals || argument.size() < 2 || argument[0] != '-' || argument == "-") {
             arguments.positionals.push_back(argument);
             continue;

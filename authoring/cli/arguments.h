@@ -1,6 +1,6 @@
 #pragma once
 // A small command-line parser for the kumite subcommands: `--flag`, `--flag value`, `--flag=value` and
-// positionals. Unknown flags and missing values are usage errors (exit status 2).
+// positionals; `-o` is short for `--output`. Unknown flags and missing values are usage errors (exit status 2).
 
 #include "kumite/core/result.h"
 
@@ -37,6 +37,8 @@ struct Arguments {
 
     bool has(const std::string& flag) const;
     std::optional<std::string> value(const std::string& flag) const;
+    // The flag as a whole number in [min, max], `fallback` when absent; an error says which flag and why.
+    Result<long long> integer(const std::string& flag, long long min, long long max, long long fallback) const;
 };
 
 // Parses argv after the subcommand name. `--help` is reported as help_requested.

@@ -1,6 +1,6 @@
 #include "capture_loading.h"
 
-#include "kumite/formats/body_map_file.h"
+#include "kumite/formats/capture_file.h"
 
 #include <cstdlib>
 #include <iostream>
@@ -30,20 +30,7 @@ std::filesystem::path resolve_capture_path(const std::filesystem::path& path, co
 }
 
 Result<BvhFile> load_capture(const std::filesystem::path& given_path, const CaptureOptions& options) {
-    const std::filesystem::path path = resolve_capture_path(given_path, options.mocap_root);
-    Result<BvhFile> file = bvh_read_file(path, options.read);
-    if (!file) return file;
-    std::error_code error;
-    std::optional<std::filesystem::path> override_path = options.body_map_file;
-    if (!override_path && std::filesystem::exists(body_map_sidecar_path(path), error)) {
-        override_path = body_map_sidecar_path(path);
-    }
-    if (override_path) {
-        Result<BodyMap> map = body_map_apply_override_file(file->body_map, file->clip.skeleton, *override_path);
-        if (!map) return map.error();
-        file->body_map = *map;
-    }
-    return file;
+    return capture_read_file(resolve_capture_path(given_path, options.mocap_root), options.read, options.body_map_file);
 }
 
 std::filesystem::path locate_data_folder(const char* environment_variable, const std::filesystem::path& relative) {

@@ -44,16 +44,8 @@ nlohmann::json report_json(const RetargetReport& report, const std::string& char
 } // namespace
 
 int run_retarget(int argc, char** argv) {
-    // "-o" is the short form of --output.
-    std::vector<char*> arguments_with_long_output(argv, argv + argc);
-    static char long_output[] = "--output";
-    for (char*& argument : arguments_with_long_output) {
-        if (std::string(argument) == "-o") argument = long_output;
-    }
     Arguments arguments;
-    if (std::optional<int> status = parse_command_line(retarget_spec(), argc, arguments_with_long_output.data(), arguments)) {
-        return *status;
-    }
+    if (std::optional<int> status = parse_command_line(retarget_spec(), argc, argv, arguments)) return *status;
     const std::optional<std::string> character_name = arguments.value("character");
     const std::optional<std::string> output = arguments.value("output");
     if (!character_name) return usage_error(retarget_spec(), "--character NAME is required");

@@ -29,4 +29,10 @@ int run_retarget(int argc, char** argv);
 const CommandSpec& suggest_spec();
 int run_suggest(int argc, char** argv);
 
+const CommandSpec& bake_spec();
+int run_bake(int argc, char** argv);
+
+const CommandSpec& db_info_spec();
+int run_db_info(int argc, char** argv);
+
 } // namespace kumite::cli

@@ -10,13 +10,15 @@ namespace {
 
 using kumite::cli::Command;
 
-constexpr std::array<Command, 6> k_commands = {{
+constexpr std::array<Command, 8> k_commands = {{
     {kumite::cli::inspect_spec, kumite::cli::run_inspect},
     {kumite::cli::positions_spec, kumite::cli::run_positions},
     {kumite::cli::convert_spec, kumite::cli::run_convert},
     {kumite::cli::characters_spec, kumite::cli::run_characters},
     {kumite::cli::retarget_spec, kumite::cli::run_retarget},
     {kumite::cli::suggest_spec, kumite::cli::run_suggest},
+    {kumite::cli::bake_spec, kumite::cli::run_bake},
+    {kumite::cli::db_info_spec, kumite::cli::run_db_info},
 }};
 
 void print_overview(std::ostream& out) {

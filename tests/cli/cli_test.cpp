@@ -208,3 +208,84 @@ TEST_CASE("cli: suggest --json lists strikes with the contract's keys", "[cli][c
     CHECK(document["clips"][0]["hit_frame"] == 60);
     CHECK(document["clips"][0]["mirror"] == true);
 }
+
+namespace {
+
+// Bakes the golden annotations once per test run.
+std::filesystem::path baked_golden() {
+    static const std::filesystem::path path = [] {
+        const std::filesystem::path out = kumite::test::make_temp_dir("cli-bake") / "golden.kdb";
+        const auto result = run_command(kumite_exe() + " bake " + (kumite::test::source_dir() / "data/annotations/golden.json").string() +
+                                        " -o " + out.string() + " --clusters 4 --mocap-root " + kumite::test::mocap_root().string());
+        INFO(result.out << result.err);
+        REQUIRE(result.status == 0);
+        return out;
+    }();
+    return path;
+}
+
+std::string file_bytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+} // namespace
+
+TEST_CASE("cli: bake writes a database that db-info describes with the contract's keys", "[cli][corpus]") {
+    if (!std::filesystem::exists(kumite::test::mocap_root() / "bandai-namco-1")) return;
+    const std::filesystem::path db = baked_golden();
+    const auto info = run_command(kumite_exe() + " db-info " + db.string() + " --verify --json");
+    REQUIRE(info.status == 0);
+    const nlohmann::json document = nlohmann::json::parse(info.out);
+    for (const char* key : {"format_version", "bytes", "hash", "clips", "poses", "clusters", "actors", "strikes", "open_us"}) {
+        CHECK(document.contains(key));
+    }
+    CHECK(document["clips"] == 4);
+    CHECK(document["clusters"] == 4);
+    CHECK(document["strikes"]["kick"]["left"] == 1);
+    CHECK(document["strikes"]["kick"]["right"] == 1);
+    CHECK(document["strikes"]["punch"]["left"] == 1);
+    CHECK(document["strikes"]["punch"]["right"] == 0);
+    CHECK(document["bytes"] == std::filesystem::file_size(db));
+    const auto text = run_command(kumite_exe() + " db-info " + db.string());
+    CHECK(text.status == 0);
+    CHECK_THAT(text.out, Catch::Contains("4 clips"));
+}
+
+TEST_CASE("cli: db-info refuses flipped, truncated, empty and foreign files with a reason", "[cli][corpus]") {
+    if (!std::filesystem::exists(kumite::test::mocap_root() / "bandai-namco-1")) return;
+    const std::string bytes = file_bytes(baked_golden());
+    const std::filesystem::path folder = kumite::test::make_temp_dir("cli-corrupt");
+    auto refused = [&](const std::string& name, const std::string& content, const char* flags) {
+        const std::filesystem::path path = folder / name;
+        std::ofstream(path, std::ios::binary) << content;
+        const auto result = run_command(kumite_exe() + " db-info " + path.string() + " " + flags);
+        INFO(name << ": " << result.err);
+        CHECK(result.status == 1);
+        CHECK_THAT(result.err, Catch::Contains(path.string()));
+        return result.err;
+    };
+    std::string flipped = bytes;
+    flipped[bytes.size() / 2] = static_cast<char>(flipped[bytes.size() / 2] ^ 0x20);
+    CHECK_THAT(refused("flipped.kdb", flipped, "--verify"), Catch::Contains("hash"));
+    std::string flipped_header = bytes;
+    flipped_header[2] = 'X';
+    CHECK_THAT(refused("magic.kdb", flipped_header, ""), Catch::Contains("byte 0"));
+    CHECK_THAT(refused("truncated.kdb", bytes.substr(0, bytes.size() - 100), ""), Catch::Contains("truncated"));
+    CHECK_THAT(refused("empty.kdb", "", ""), Catch::Contains("empty"));
+    CHECK_THAT(refused("foreign.kdb", k_small_bvh, ""), Catch::Contains("not a kumite database"));
+}
+
+TEST_CASE("cli: bake usage and input errors leave no file behind", "[cli]") {
+    const std::filesystem::path folder = kumite::test::make_temp_dir("cli-bake-errors");
+    const std::string out = (folder / "out.kdb").string();
+    const std::string annotations = write_text("bad.json", R"({"version": 1, "clips": [{"name": "a"}]})").string();
+    CHECK(run_command(kumite_exe() + " bake " + annotations).status == 2);                          // no -o
+    CHECK(run_command(kumite_exe() + " bake " + annotations + " -o " + out + " --clusters 0").status == 2);
+    CHECK(run_command(kumite_exe() + " bake " + annotations + " -o " + out + " --jobs many").status == 2);
+    const auto bad = run_command(kumite_exe() + " bake " + annotations + " -o " + out);
+    CHECK(bad.status == 1);
+    CHECK_THAT(bad.err, Catch::Contains("bad.json: clip 0 (a): missing \"source\""));
+    CHECK_FALSE(std::filesystem::exists(out));
+    CHECK(std::distance(std::filesystem::directory_iterator(folder), std::filesystem::directory_iterator{}) == 0);
+}

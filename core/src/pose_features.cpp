@@ -1,0 +1,75 @@
+#include "kumite/core/pose_features.h"
+
+#include <cassert>
+#include <cmath>
+
+namespace kumite {
+namespace {
+
+// The sums Kovar's closed form needs, over all points of two clouds (x, z horizontal; y vertical).
+struct AlignmentSums {
+    double ax = 0, az = 0, bx = 0, bz = 0;
+    double a_squared = 0, b_squared = 0; // horizontal
+    double vertical = 0;                 // sum (a_y - b_y)^2
+    double cos_term = 0, sin_term = 0;
+    int count = 0;
+
+    AlignmentSums(std::span<const float> a, std::span<const float> b) {
+        assert(a.size() == b.size() && a.size() % 3 == 0);
+        count = static_cast<int>(a.size() / 3);
+        for (std::size_t i = 0; i < a.size(); i += 3) {
+            const double pax = a[i], pay = a[i + 1], paz = a[i + 2];
+            const double pbx = b[i], pby = b[i + 1], pbz = b[i + 2];
+            ax += pax;
+            az += paz;
+            bx += pbx;
+            bz += pbz;
+            a_squared += pax * pax + paz * paz;
+            b_squared += pbx * pbx + pbz * pbz;
+            vertical += (pay - pby) * (pay - pby);
+            cos_term += pax * pbx + paz * pbz;
+            sin_term += pax * pbz - paz * pbx;
+        }
+    }
+    double centred_cos() const { return cos_term - (ax * bx + az * bz) / count; }
+    double centred_sin() const { return sin_term - (ax * bz - az * bx) / count; }
+};
+
+} // namespace
+
+void pose_feature_points(std::span<Eigen::Vector3d> out, const BodyMap& body_map, std::span<const Eigen::Vector3d> positions) {
+    assert(out.size() == k_feature_parts.size());
+    for (std::size_t k = 0; k < k_feature_parts.size(); ++k) out[k] = positions[body_map.joint(k_feature_parts[k])];
+}
+
+void pose_feature_build(std::span<float> out, std::span<const Eigen::Vector3d> window_points, const HeadingFrame& heading,
+                        double leg_length) {
+    assert(out.size() == std::size_t(k_feature_dimensions) && window_points.size() == std::size_t(k_feature_cloud_size));
+    const double scale = 1.0 / leg_length;
+    for (int i = 0; i < k_feature_cloud_size; ++i) {
+        const Eigen::Vector3d local = heading.to_heading(window_points[i]) * scale;
+        for (int axis = 0; axis < 3; ++axis) out[3 * i + axis] = static_cast<float>(local[axis]);
+    }
+}
+
+double pose_feature_distance(std::span<const float> a, std::span<const float> b) {
+    const AlignmentSums sums(a, b);
+    // With the best floor translation the clouds' horizontal centroids meet; what remains is
+    // |a~|^2 + |b~|^2 - 2 max_angle sum a~ . R b~, and that maximum is the length of (centred_cos, centred_sin).
+    const double a_centred = sums.a_squared - (sums.ax * sums.ax + sums.az * sums.az) / sums.count;
+    const double b_centred = sums.b_squared - (sums.bx * sums.bx + sums.bz * sums.bz) / sums.count;
+    const double best = std::hypot(sums.centred_cos(), sums.centred_sin());
+    return std::max(0.0, sums.vertical + a_centred + b_centred - 2.0 * best);
+}
+
+FloorAlignment pose_feature_alignment(std::span<const float> a, std::span<const float> b) {
+    const AlignmentSums sums(a, b);
+    FloorAlignment alignment;
+    alignment.angle_rad = std::atan2(sums.centred_sin(), sums.centred_cos());
+    const double c = std::cos(alignment.angle_rad), s = std::sin(alignment.angle_rad);
+    alignment.x = (sums.ax - (c * sums.bx + s * sums.bz)) / sums.count;
+    alignment.z = (sums.az - (-s * sums.bx + c * sums.bz)) / sums.count;
+    return alignment;
+}
+
+} // namespace kumite
