@@ -7,18 +7,25 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/fetch_mocap.sh"
 "$root/scripts/build.sh"
 
-# The BVH reader's fuzz target, when Clang and libFuzzer are there: every seed, then a minute of fuzzing.
+# The fuzz targets, when Clang and libFuzzer are there: every seed, then a minute on the BVH reader and half a
+# minute on the database opener.
 if command -v clang++-14 >/dev/null && [[ "${KUMITE_SKIP_FUZZ:-}" != "1" ]]; then
   cmake -S "$root" -B "$root/build/fuzz" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DKUMITE_BUILD_TESTS=OFF -DKUMITE_BUILD_FUZZERS=ON >/dev/null
-  cmake --build "$root/build/fuzz" --target bvh_reader_fuzz -j"$(nproc)"
-  fuzzer="$root/build/fuzz/bin/bvh_reader_fuzz"
-  corpus="$(mktemp -d)"
-  trap 'rm -rf "$corpus"' EXIT
-  "$fuzzer" -runs=0 -rss_limit_mb=2048 "$root/tests/fuzz/corpus" 2>&1 | tail -n 2
-  "$fuzzer" -max_total_time="${KUMITE_FUZZ_SECONDS:-60}" -timeout=5 -rss_limit_mb=2048 -print_final_stats=1 \
-    -dict="$root/tests/fuzz/bvh.dict" -artifact_prefix="$root/build/fuzz/" "$corpus" "$root/tests/fuzz/corpus" 2>&1 | tail -n 40
-  echo "fuzz: no crash, leak, timeout or out-of-memory in ${KUMITE_FUZZ_SECONDS:-60} s"
+  cmake --build "$root/build/fuzz" --target bvh_reader_fuzz database_fuzz -j"$(nproc)"
+  work="$(mktemp -d)"
+  trap 'rm -rf "$work"' EXIT
+  run_fuzzer() { # NAME SEED_FOLDER SECONDS [EXTRA...]
+    local fuzzer="$root/build/fuzz/bin/$1" seeds="$2" seconds="$3"
+    shift 3
+    mkdir -p "$work/$(basename "$fuzzer")"
+    "$fuzzer" -runs=0 -rss_limit_mb=2048 "$seeds" 2>&1 | tail -n 2
+    "$fuzzer" -max_total_time="$seconds" -timeout=5 -rss_limit_mb=2048 -print_final_stats=1 "$@" \
+      -artifact_prefix="$root/build/fuzz/" "$work/$(basename "$fuzzer")" "$seeds" 2>&1 | tail -n 40
+    echo "fuzz $(basename "$fuzzer"): no crash, leak, timeout or out-of-memory in $seconds s"
+  }
+  run_fuzzer bvh_reader_fuzz "$root/tests/fuzz/corpus" "${KUMITE_FUZZ_SECONDS:-60}" -dict="$root/tests/fuzz/bvh.dict"
+  run_fuzzer database_fuzz "$root/tests/fuzz/database_corpus" "${KUMITE_DATABASE_FUZZ_SECONDS:-30}"
 fi
 
 cd "$root/build"
