@@ -35,4 +35,7 @@ int run_bake(int argc, char** argv);
 const CommandSpec& db_info_spec();
 int run_db_info(int argc, char** argv);
 
+const CommandSpec& query_spec();
+int run_query(int argc, char** argv);
+
 } // namespace kumite::cli

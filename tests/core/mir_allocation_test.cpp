@@ -1,34 +1,13 @@
 // The per-frame retargeting path must not allocate (STYLE.md 5): global operator new is counted while encode and
 // decode run, after a first call has sized the reused frame and pose. Its own executable, since it replaces the
-// global allocation functions.
+// global allocation functions (support/allocation_counter.cpp).
 
 #include "kumite/core/mir.h"
 #include "kumite/formats/bvh_reader.h"
+#include "support/allocation_counter.h"
 #include "support/test_paths.h"
 
 #include <catch2/catch.hpp>
-
-#include <atomic>
-#include <cstdlib>
-#include <new>
-
-namespace {
-std::atomic<bool> g_counting{false};
-std::atomic<long> g_allocations{0};
-
-void* counted_allocation(std::size_t size) {
-    if (g_counting.load(std::memory_order_relaxed)) g_allocations.fetch_add(1, std::memory_order_relaxed);
-    if (void* pointer = std::malloc(size == 0 ? 1 : size)) return pointer;
-    throw std::bad_alloc();
-}
-} // namespace
-
-void* operator new(std::size_t size) { return counted_allocation(size); }
-void* operator new[](std::size_t size) { return counted_allocation(size); }
-void operator delete(void* pointer) noexcept { std::free(pointer); }
-void operator delete[](void* pointer) noexcept { std::free(pointer); }
-void operator delete(void* pointer, std::size_t) noexcept { std::free(pointer); }
-void operator delete[](void* pointer, std::size_t) noexcept { std::free(pointer); }
 
 using namespace kumite;
 
@@ -54,19 +33,17 @@ TEST_CASE("mir: encode and decode allocate nothing per frame", "[core][corpus]")
     encoder.encode(frame, source->clip.pose(0)); // sizes the reused frame and pose
     decoder.decode(pose, frame);
 
-    g_allocations = 0;
-    g_counting = true;
-    for (int f = 0; f < source->clip.frame_count(); ++f) {
-        encoder.encode(frame, source->clip.pose(f));
-        decoder.decode(pose, frame);
-        decoder.decode(pose, frame, pins);
+    {
+        kumite::test::AllocationScope scope;
+        for (int f = 0; f < source->clip.frame_count(); ++f) {
+            encoder.encode(frame, source->clip.pose(f));
+            decoder.decode(pose, frame);
+            decoder.decode(pose, frame, pins);
+        }
+        CHECK(scope.count() == 0);
     }
-    g_counting = false;
-    CHECK(g_allocations.load() == 0);
-
     // The counter does count: a vector inside the window is seen.
-    g_counting = true;
+    kumite::test::AllocationScope scope;
     std::vector<int> probe(3);
-    g_counting = false;
-    CHECK(g_allocations.load() == 1);
+    CHECK(scope.count() == 1);
 }

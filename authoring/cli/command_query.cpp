@@ -1,0 +1,187 @@
+// kumite query: the strike the retrieval picks for a character standing at the origin and a target.
+
+#include "capture_loading.h"
+#include "character_catalog.h"
+#include "commands.h"
+
+#include "kumite/core/character_rig.h"
+#include "kumite/core/retrieval.h"
+#include "kumite/formats/motion_database_file.h"
+
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+
+namespace kumite::cli {
+
+const CommandSpec& query_spec() {
+    static const CommandSpec spec{
+        "query",
+        "DB.kdb --character NAME (--target X,Y,Z | --targets FILE.csv) --command SEMANTICS [--side left|right|any] [--exhaustive] [--json]",
+        "Retrieves the strike clip and start pose that suit a character standing at the origin, facing +Z, in\n"
+        "the database's guard pose, and a target in world metres (Y up). Clusters are searched nearest first with\n"
+        "exact bounds; --exhaustive scores every start of every clip instead (the slow reference).",
+        1, 1,
+        {{"character", "NAME", "a character of data/characters (see kumite characters)"},
+         {"target", "X,Y,Z", "the target, world metres"},
+         {"targets", "FILE.csv", "one x,y,z per line ('#' comments); prints a list of results"},
+         {"command", "SEMANTICS", "punch, kick, or any strike semantics the database holds"},
+         {"side", "left|right|any", "which side strikes (default any)"},
+         {"exhaustive", "", "use the exhaustive reference search"},
+         {"scaling", "leg|limb", "bring actors' hit paths to the character by leg length (default) or by the striking limb"},
+         characters_dir_flag(), json_flag()}};
+    return spec;
+}
+
+namespace {
+
+Result<Eigen::Vector3d> parse_point(const std::string& text, const std::string& where) {
+    Eigen::Vector3d point;
+    char extra = 0;
+    if (std::sscanf(text.c_str(), " %lf , %lf , %lf %c", &point.x(), &point.y(), &point.z(), &extra) != 3 || !point.allFinite()) {
+        return make_error(ErrorCode::invalid, where + ": expected X,Y,Z in metres, not '" + text + "'");
+    }
+    return point;
+}
+
+Result<std::vector<Eigen::Vector3d>> read_targets(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) return make_error(ErrorCode::io, path + ": cannot read the targets file");
+    std::vector<Eigen::Vector3d> targets;
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.find_first_not_of(" \t") == std::string::npos || line[line.find_first_not_of(" \t")] == '#') continue;
+        Result<Eigen::Vector3d> point = parse_point(line, path + ":" + std::to_string(number));
+        if (!point) return point.error();
+        targets.push_back(*point);
+    }
+    if (targets.empty()) return make_error(ErrorCode::invalid, path + ": no targets");
+    return targets;
+}
+
+const char* side_name(Side side) { return side == Side::left ? "left" : side == Side::right ? "right" : "none"; }
+
+nlohmann::json result_json(const Retriever& retriever, const RetrievalResult& result, double latency_us) {
+    const MotionDatabaseView& db = retriever.database();
+    const DbClip& clip = db.clips[result.clip];
+    return {{"clip", db.string(clip.name)},
+            {"clip_index", result.clip},
+            {"semantics", db.string(clip.semantics)},
+            {"side", side_name(static_cast<Side>(clip.side))},
+            {"segment", body_part_name(static_cast<BodyPart>(clip.segment))},
+            {"start_frame", result.start_frame},
+            {"contact_frame", result.contact_frame},
+            {"time_to_contact_s", result.time_to_contact_s},
+            {"d_pose", result.d_pose},
+            {"d_target", result.d_target_m},
+            {"score", result.score},
+            {"latency_us", latency_us},
+            {"contact_point", json_vec3(result.contact_point_world)},
+            {"clip_to_world", {{"angle_rad", result.clip_to_world.angle_rad}, {"x", result.clip_to_world.x}, {"z", result.clip_to_world.z}}},
+            {"counts",
+             {{"clusters_visited", result.counts.clusters_visited},
+              {"candidates_seen", result.counts.candidates_seen},
+              {"inside_box", result.counts.inside_box},
+              {"pose_scored", result.counts.pose_scored},
+              {"target_scored", result.counts.target_scored}}}};
+}
+
+} // namespace
+
+int run_query(int argc, char** argv) {
+    Arguments arguments;
+    if (std::optional<int> status = parse_command_line(query_spec(), argc, argv, arguments)) return *status;
+    const std::optional<std::string> character_name = arguments.value("character");
+    const std::optional<std::string> command = arguments.value("command");
+    if (!character_name) return usage_error(query_spec(), "--character NAME is required");
+    if (!command) return usage_error(query_spec(), "--command SEMANTICS is required (punch, kick, ...)");
+    if (arguments.value("target").has_value() == arguments.value("targets").has_value()) {
+        return usage_error(query_spec(), "give exactly one of --target X,Y,Z and --targets FILE.csv");
+    }
+    Side side = Side::none;
+    if (const std::optional<std::string> name = arguments.value("side"); name && *name != "any") {
+        if (*name != "left" && *name != "right") return usage_error(query_spec(), "--side must be left, right or any, not '" + *name + "'");
+        side = *name == "left" ? Side::left : Side::right;
+    }
+    RetrievalSettings settings;
+    if (const std::optional<std::string> scaling = arguments.value("scaling")) {
+        if (*scaling != "leg" && *scaling != "limb") return usage_error(query_spec(), "--scaling must be leg or limb");
+        settings.scaling = *scaling == "leg" ? RetrievalScaling::leg_length : RetrievalScaling::limb_length;
+    }
+    std::vector<Eigen::Vector3d> targets;
+    if (const std::optional<std::string> text = arguments.value("target")) {
+        Result<Eigen::Vector3d> point = parse_point(*text, "--target");
+        if (!point) return usage_error(query_spec(), point.error().message);
+        targets.push_back(*point);
+    } else {
+        Result<std::vector<Eigen::Vector3d>> read = read_targets(*arguments.value("targets"));
+        if (!read) return input_error(read.error().message);
+        targets = std::move(*read);
+    }
+
+    Result<MotionDatabase> database = MotionDatabase::open(arguments.positionals[0]);
+    if (!database) return input_error(database.error().message);
+    const std::optional<std::string> folder = arguments.value("characters-dir");
+    Result<BvhFile> character = load_character(folder ? std::filesystem::path(*folder) : default_characters_dir(), *character_name);
+    if (!character) return usage_error(query_spec(), character.error().message);
+    Result<RestAnatomy> anatomy = rest_anatomy_build(character->clip, character->body_map);
+    if (!anatomy) return input_error("character " + *character_name + ": " + anatomy.error().message);
+
+    const Retriever retriever(database->view(), settings);
+    const int semantics = retriever.semantics_id(*command);
+    if (semantics < 0 || *command == "rest" || command->starts_with("step_")) {
+        std::string known;
+        for (const DbClip& clip : database->view().clips) {
+            const std::string name(database->view().string(clip.semantics));
+            if (db_clip_is_strike(clip) && known.find(name) == std::string::npos) known += (known.empty() ? "" : ", ") + name;
+        }
+        return input_error(arguments.positionals[0] + ": no '" + *command + "' strikes in this database (it has: " + known + ")");
+    }
+    CharacterRig rig(character->clip.skeleton, *anatomy);
+    Pose pose;
+    rig.stand_at_origin(pose, database->view());
+    std::array<float, k_feature_dimensions> feature;
+    rig.still_feature(feature);
+    RetrievalQuery query;
+    query.pose_feature = feature;
+    query.heading = rig.heading();
+    query.semantics = semantics;
+    query.side = side;
+    query.character = rig.size();
+    RetrievalWorkspace workspace = retriever.make_workspace();
+    const bool exhaustive = arguments.has("exhaustive");
+
+    nlohmann::json results = nlohmann::json::array();
+    const auto all_started = std::chrono::steady_clock::now();
+    for (const Eigen::Vector3d& target : targets) {
+        query.target_world = target;
+        const auto started = std::chrono::steady_clock::now();
+        const RetrievalResult result = exhaustive ? retriever.query_exhaustive(query) : retriever.query(query, workspace);
+        const double latency_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started).count();
+        if (!result.found) {
+            return input_error(arguments.positionals[0] + ": no " + *command + " with side " + side_name(side) +
+                               " has a start far enough before its hit");
+        }
+        results.push_back(result_json(retriever, result, latency_us));
+    }
+    const double total_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - all_started).count();
+
+    const bool many = arguments.value("targets").has_value();
+    if (arguments.has("json")) {
+        print_json(many ? nlohmann::json{{"results", results}, {"total_us", total_us}} : results[0]);
+        return k_exit_ok;
+    }
+    for (std::size_t i = 0; i < results.size(); ++i) {
+        const nlohmann::json& r = results[i];
+        std::printf("target %.2f,%.2f,%.2f: %s (%s %s, %s) start %d contact %d in %.2f s; d_pose %.3f d_target %.3f m score %.3f; %.1f us\n",
+                    targets[i].x(), targets[i].y(), targets[i].z(), r["clip"].get<std::string>().c_str(),
+                    r["semantics"].get<std::string>().c_str(), r["side"].get<std::string>().c_str(), r["segment"].get<std::string>().c_str(),
+                    r["start_frame"].get<int>(), r["contact_frame"].get<int>(), r["time_to_contact_s"].get<double>(),
+                    r["d_pose"].get<double>(), r["d_target"].get<double>(), r["score"].get<double>(), r["latency_us"].get<double>());
+    }
+    return k_exit_ok;
+}
+
+} // namespace kumite::cli

@@ -1,0 +1,147 @@
+#pragma once
+// Retrieval (ARCHITECTURE.md step 5): the strike clip and start pose that best suit the character's current pose
+// and a target, from a mapped motion database.
+//
+// Scoring. A candidate is a start pose of a strike clip of the ordered semantics and side, at least
+// `min_lead_frames` before its hit frame. Its score is
+//     d = w_pose * d_pose + w_target * d_target / leg_length_character
+// where d_pose is Kovar's distance between the current pose's feature and the candidate's, as an RMS over the
+// feature's points (leg lengths), and d_target the smallest distance in metres between the target and the hit
+// segment's path from the start to the hit, the path brought onto the character: expressed in the start's heading
+// frame and scaled by size_character / size_actor (the paper's c_r = c * size_actor / size_character, applied to
+// the path instead of the target so that distances are the character's). The contact frame is where that distance
+// is smallest.
+//
+// Search. Clusters are visited nearest centroid first. sqrt of Kovar's distance is a metric (the minimum over
+// isometries of a Euclidean distance), so |d(q, c) - d(m, c)| bounds d(q, m) from below for a member m of the
+// cluster with centroid c; and the distance from the target to the start's hit-path box bounds d_target. A
+// candidate whose bound cannot beat the best so far is skipped before any exact distance is computed, and the
+// search stops when a whole cluster's bound cannot. This is the paper's "nearest cluster, then filter by the
+// hit trajectory's bounding box (target inside, else nearest boxes)" made exact: the fast path returns what the
+// exhaustive reference returns, unless two scores tie.
+//
+// Queries do not allocate (each thread brings its RetrievalWorkspace) and may run concurrently on one Retriever.
+
+#include "kumite/core/heading_frame.h"
+#include "kumite/core/motion_database.h"
+#include "kumite/core/pose_distance.h"
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace kumite {
+
+// How a database actor's hit path is brought to a character's size.
+enum class RetrievalScaling {
+    leg_length,   // by the ratio of leg lengths (thigh + shin), for every strike
+    limb_length,  // by the hit segment's limb: arms for hand/forearm strikes, legs for foot/shin strikes
+};
+
+struct RetrievalSettings {
+    double pose_weight = 1.0;
+    double target_weight = 1.0;
+    int min_lead_frames = 3; // a start at least this many frames before the hit (0.1 s at 30 fps)
+    RetrievalScaling scaling = RetrievalScaling::leg_length;
+};
+
+// What the retrieval needs to know about the character.
+struct CharacterSize {
+    double leg_length_m = 1.0;
+    double arm_length_m = 1.0;
+};
+
+struct RetrievalQuery {
+    std::span<const float> pose_feature; // the current pose (pose_feature_build with the character's leg length)
+    HeadingFrame heading;                // the character's current heading frame, world
+    Eigen::Vector3d target_world = Eigen::Vector3d::Zero();
+    int semantics = -1;                  // Retriever::semantics_id
+    Side side = Side::none;              // none: either side
+    CharacterSize character;
+};
+
+struct RetrievalCounts {
+    int clusters_visited = 0;   // clusters whose members were looked at
+    int candidates_seen = 0;    // members of those clusters that obey the order
+    int inside_box = 0;         // of those, starts whose hit-path box holds the target
+    int pose_scored = 0;        // exact pose distances computed
+    int target_scored = 0;      // exact path distances computed
+};
+
+struct RetrievalResult {
+    bool found = false;
+    int clip = -1;
+    int start_frame = 0;
+    int contact_frame = 0;
+    double time_to_contact_s = 0.0;
+    double d_pose = 0.0;       // RMS over the feature's points, leg lengths
+    double d_target_m = 0.0;   // character metres
+    double score = 0.0;
+    int start_pose = -1;       // database pose index of the start
+    // Puts the clip, decoded onto the character, on the current pose: a point p of the decoded clip (character
+    // metres, the clip's world scaled to the character) goes to clip_to_world.apply(p).
+    FloorAlignment clip_to_world;
+    Eigen::Vector3d contact_point_world = Eigen::Vector3d::Zero(); // the scaled, aligned path at the contact frame
+    RetrievalCounts counts;
+};
+
+// Per-thread scratch space of a query (sized once by Retriever::make_workspace; queries then never allocate).
+struct RetrievalWorkspace {
+    std::vector<std::pair<double, int>> cluster_order; // [cluster] (lower bound, cluster)
+    std::vector<double> centroid_distance;             // [cluster] sqrt(Kovar / points)
+};
+
+class Retriever {
+public:
+    explicit Retriever(const MotionDatabaseView& database, RetrievalSettings settings = {});
+
+    // The id of a semantics the database holds ("punch"), or -1.
+    int semantics_id(std::string_view semantics) const;
+    std::string_view semantics_name(int id) const { return m_semantics_names[id]; }
+
+    RetrievalWorkspace make_workspace() const;
+
+    RetrievalResult query(const RetrievalQuery& query, RetrievalWorkspace& workspace) const;
+    // The reference: every start of every clip of the order, scored exactly; no clusters, no bounds.
+    RetrievalResult query_exhaustive(const RetrievalQuery& query) const;
+
+    const MotionDatabaseView& database() const { return m_db; }
+    const RetrievalSettings& settings() const { return m_settings; }
+
+private:
+    struct ClipInfo {
+        int semantics = -1;
+        Side side = Side::none;
+        bool arm_strike = false;
+        int first_start = 0; // pose indices of its candidate starts: [first_start, end_start)
+        int end_start = 0;
+        double actor_leg_length = 1.0;
+        double actor_arm_length = 1.0;
+    };
+    struct PoseInfo {
+        float distance_to_centroid = 0.0f; // sqrt(Kovar / points), leg lengths
+        float heading_cos = 1.0f, heading_sin = 0.0f;
+    };
+    // Candidate starts of cluster c and order key k: m_candidates[m_candidate_ranges[c * keys + k] ...].
+    int order_key(int semantics, Side side) const { return semantics * 3 + static_cast<int>(side); }
+
+    bool obeys(const ClipInfo& clip, const RetrievalQuery& query) const;
+    double scale_to_character(const ClipInfo& clip, const CharacterSize& character) const;
+    double box_distance(const DbPose& pose, const Eigen::Vector3d& target_in_start) const;
+    // Scores one start exactly; returns false when its score cannot beat `best` (left untouched then).
+    bool score_start(int pose_index, const RetrievalQuery& query, double d_pose, RetrievalResult& best) const;
+    void finish(RetrievalResult& result, const RetrievalQuery& query) const;
+
+    MotionDatabaseView m_db;
+    RetrievalSettings m_settings;
+    std::vector<std::string_view> m_semantics_names;
+    std::vector<ClipInfo> m_clips;
+    std::vector<PoseInfo> m_poses;
+    std::vector<float> m_cluster_radius;     // sqrt(radius / points)
+    std::vector<std::uint32_t> m_candidates; // pose indices grouped by cluster, then order key
+    std::vector<std::uint32_t> m_candidate_ranges; // [cluster * keys + key] begin; one more entry at the end
+    int m_order_keys = 0;
+};
+
+} // namespace kumite

@@ -1,0 +1,229 @@
+#include "kumite/core/retrieval.h"
+
+#include "kumite/core/pose_features.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+namespace kumite {
+namespace {
+
+constexpr double k_infinity = std::numeric_limits<double>::infinity();
+constexpr Side k_sides[] = {Side::none, Side::left, Side::right};
+
+// Kovar's distance as an RMS over the feature's points: a metric (see the header), in leg lengths.
+double rms_distance(std::span<const float> a, std::span<const float> b) {
+    return std::sqrt(pose_feature_distance(a, b) / k_feature_cloud_size);
+}
+
+bool is_arm_part(int segment) {
+    return segment >= static_cast<int>(BodyPart::clavicle_l) && segment <= static_cast<int>(BodyPart::hand_r);
+}
+
+// A point of the clip world seen from a start's heading frame (yaw as cos/sin).
+Eigen::Vector3d to_start_heading(const DbPose& start, float cos_yaw, float sin_yaw, const float (&point)[3]) {
+    const double dx = point[0] - start.heading[0], dz = point[2] - start.heading[1];
+    return {cos_yaw * dx - sin_yaw * dz, point[1], sin_yaw * dx + cos_yaw * dz};
+}
+
+} // namespace
+
+Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings settings) : m_db(database), m_settings(settings) {
+    for (const DbClip& clip : m_db.clips) {
+        const std::string_view name = m_db.string(clip.semantics);
+        if (std::find(m_semantics_names.begin(), m_semantics_names.end(), name) == m_semantics_names.end()) m_semantics_names.push_back(name);
+    }
+    m_order_keys = static_cast<int>(m_semantics_names.size()) * 3;
+
+    m_clips.resize(m_db.clips.size());
+    for (std::size_t c = 0; c < m_db.clips.size(); ++c) {
+        const DbClip& clip = m_db.clips[c];
+        ClipInfo& info = m_clips[c];
+        info.semantics = semantics_id(m_db.string(clip.semantics));
+        info.side = static_cast<Side>(std::min<std::uint32_t>(clip.side, 2));
+        info.arm_strike = is_arm_part(clip.segment);
+        info.first_start = info.end_start = static_cast<int>(clip.first_pose);
+        if (db_clip_is_strike(clip)) info.end_start += std::max(0, clip.hit_frame - m_settings.min_lead_frames + 1);
+        const DbActor& actor = m_db.actors[clip.actor];
+        info.actor_leg_length = actor.leg_length_m;
+        info.actor_arm_length = actor.arm_length_m;
+    }
+
+    m_poses.resize(m_db.poses.size());
+    for (std::size_t p = 0; p < m_db.poses.size(); ++p) {
+        m_poses[p].heading_cos = std::cos(m_db.poses[p].heading[2]);
+        m_poses[p].heading_sin = std::sin(m_db.poses[p].heading[2]);
+    }
+    const int clusters = static_cast<int>(m_db.clusters.size());
+    m_cluster_radius.resize(clusters);
+    m_candidate_ranges.assign(std::size_t(clusters) * m_order_keys + 1, 0);
+    for (int c = 0; c < clusters; ++c) {
+        const DbCluster& cluster = m_db.clusters[c];
+        double radius = 0.0;
+        for (std::uint32_t m = 0; m < cluster.member_count; ++m) {
+            const std::uint32_t pose = m_db.members[cluster.first_member + m];
+            const double distance = rms_distance(m_db.centroid(c), m_db.feature(pose));
+            m_poses[pose].distance_to_centroid = static_cast<float>(distance);
+            radius = std::max(radius, distance);
+        }
+        m_cluster_radius[c] = static_cast<float>(radius);
+        // Candidate starts grouped by order key, in member order within a key.
+        for (int key = 0; key < m_order_keys; ++key) {
+            m_candidate_ranges[std::size_t(c) * m_order_keys + key] = static_cast<std::uint32_t>(m_candidates.size());
+            for (std::uint32_t m = 0; m < cluster.member_count; ++m) {
+                const std::uint32_t pose = m_db.members[cluster.first_member + m];
+                const ClipInfo& clip = m_clips[m_db.poses[pose].clip];
+                if (int(pose) >= clip.first_start && int(pose) < clip.end_start && order_key(clip.semantics, clip.side) == key) {
+                    m_candidates.push_back(pose);
+                }
+            }
+        }
+    }
+    m_candidate_ranges.back() = static_cast<std::uint32_t>(m_candidates.size());
+}
+
+int Retriever::semantics_id(std::string_view semantics) const {
+    const auto found = std::find(m_semantics_names.begin(), m_semantics_names.end(), semantics);
+    return found == m_semantics_names.end() ? -1 : static_cast<int>(found - m_semantics_names.begin());
+}
+
+RetrievalWorkspace Retriever::make_workspace() const {
+    RetrievalWorkspace workspace;
+    workspace.cluster_order.resize(m_db.clusters.size());
+    workspace.centroid_distance.resize(m_db.clusters.size());
+    return workspace;
+}
+
+bool Retriever::obeys(const ClipInfo& clip, const RetrievalQuery& query) const {
+    return clip.semantics == query.semantics && (query.side == Side::none || clip.side == query.side);
+}
+
+double Retriever::scale_to_character(const ClipInfo& clip, const CharacterSize& character) const {
+    if (m_settings.scaling == RetrievalScaling::limb_length && clip.arm_strike) return character.arm_length_m / clip.actor_arm_length;
+    return character.leg_length_m / clip.actor_leg_length;
+}
+
+double Retriever::box_distance(const DbPose& pose, const Eigen::Vector3d& target) const {
+    double squared = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const double below = pose.start_box_min[axis] - target[axis], above = target[axis] - pose.start_box_max[axis];
+        const double outside = std::max({below, above, 0.0});
+        squared += outside * outside;
+    }
+    return std::sqrt(squared);
+}
+
+bool Retriever::score_start(int pose_index, const RetrievalQuery& query, double d_pose, RetrievalResult& best) const {
+    const DbPose& start = m_db.poses[pose_index];
+    const ClipInfo& clip = m_clips[start.clip];
+    const DbClip& record = m_db.clips[start.clip];
+    const double scale = scale_to_character(clip, query.character);
+    const Eigen::Vector3d target_in_start = query.heading.to_heading(query.target_world) / scale; // the paper's c_r
+    const PoseInfo& info = m_poses[pose_index];
+    double nearest = k_infinity;
+    int contact = static_cast<int>(start.frame);
+    for (int frame = static_cast<int>(start.frame); frame <= record.hit_frame; ++frame) {
+        const DbPose& at = m_db.poses[record.first_pose + frame];
+        const double distance = (to_start_heading(start, info.heading_cos, info.heading_sin, at.hit_point) - target_in_start).squaredNorm();
+        if (distance < nearest) {
+            nearest = distance;
+            contact = frame;
+        }
+    }
+    const double d_target_m = std::sqrt(nearest) * scale;
+    const double score = m_settings.pose_weight * d_pose + m_settings.target_weight * d_target_m / query.character.leg_length_m;
+    if (!(score < best.score)) return false;
+    best.found = true;
+    best.clip = static_cast<int>(start.clip);
+    best.start_pose = pose_index;
+    best.start_frame = static_cast<int>(start.frame);
+    best.contact_frame = contact;
+    best.d_pose = d_pose;
+    best.d_target_m = d_target_m;
+    best.score = score;
+    return true;
+}
+
+void Retriever::finish(RetrievalResult& result, const RetrievalQuery& query) const {
+    if (!result.found) return;
+    const DbClip& record = m_db.clips[result.clip];
+    const ClipInfo& clip = m_clips[result.clip];
+    const DbPose& start = m_db.poses[result.start_pose];
+    result.time_to_contact_s = (result.contact_frame - result.start_frame) * static_cast<double>(m_db.meta.frame_time_s);
+    // The decoded clip's world is the clip's scaled by the leg-length ratio (the MIR stores the hip centre in leg
+    // lengths), so its start heading sits at the scaled origin, with the same yaw.
+    const double decoded_scale = query.character.leg_length_m / clip.actor_leg_length;
+    const double angle = query.heading.yaw_rad - start.heading[2];
+    result.clip_to_world.angle_rad = angle;
+    const Eigen::Vector3d start_origin(start.heading[0] * decoded_scale, 0.0, start.heading[1] * decoded_scale);
+    FloorAlignment rotation_only{angle, 0.0, 0.0};
+    const Eigen::Vector3d turned = rotation_only.apply(start_origin);
+    result.clip_to_world.x = query.heading.origin.x() - turned.x();
+    result.clip_to_world.z = query.heading.origin.z() - turned.z();
+    const PoseInfo& info = m_poses[result.start_pose];
+    const Eigen::Vector3d contact_in_start =
+        to_start_heading(start, info.heading_cos, info.heading_sin, m_db.poses[record.first_pose + result.contact_frame].hit_point);
+    result.contact_point_world = query.heading.to_world(contact_in_start * scale_to_character(clip, query.character));
+}
+
+RetrievalResult Retriever::query(const RetrievalQuery& query, RetrievalWorkspace& workspace) const {
+    assert(query.pose_feature.size() == std::size_t(k_feature_dimensions));
+    RetrievalResult best;
+    best.score = k_infinity;
+    if (query.semantics < 0 || query.semantics >= static_cast<int>(m_semantics_names.size())) return best;
+    const int clusters = static_cast<int>(m_db.clusters.size());
+    for (int c = 0; c < clusters; ++c) {
+        const double distance = rms_distance(m_db.centroid(c), query.pose_feature);
+        workspace.centroid_distance[c] = distance;
+        workspace.cluster_order[c] = {m_settings.pose_weight * std::max(0.0, distance - m_cluster_radius[c] * (1.0 + 1e-5) - 1e-6), c};
+    }
+    std::sort(workspace.cluster_order.begin(), workspace.cluster_order.end());
+    const Eigen::Vector3d target_in_heading = query.heading.to_heading(query.target_world);
+    for (const auto& [cluster_bound, c] : workspace.cluster_order) {
+        if (!(cluster_bound < best.score)) break; // no member of this or a later cluster can do better
+        ++best.counts.clusters_visited;
+        const double centroid_distance = workspace.centroid_distance[c];
+        for (Side side : k_sides) {
+            if (query.side != Side::none && side != query.side) continue;
+            const std::size_t range = std::size_t(c) * m_order_keys + order_key(query.semantics, side);
+            for (std::uint32_t k = m_candidate_ranges[range]; k < m_candidate_ranges[range + 1]; ++k) {
+                const std::uint32_t pose = m_candidates[k];
+                ++best.counts.candidates_seen;
+                const ClipInfo& clip = m_clips[m_db.poses[pose].clip];
+                const double scale = scale_to_character(clip, query.character);
+                const double box = box_distance(m_db.poses[pose], target_in_heading / scale) * scale / query.character.leg_length_m;
+                best.counts.inside_box += box == 0.0;
+                const double pose_bound = std::max(0.0, std::abs(centroid_distance - m_poses[pose].distance_to_centroid) - 1e-5);
+                const double target_part = m_settings.target_weight * box;
+                if (!(m_settings.pose_weight * pose_bound + target_part < best.score)) continue;
+                ++best.counts.pose_scored;
+                const double d_pose = rms_distance(query.pose_feature, m_db.feature(pose));
+                if (!(m_settings.pose_weight * d_pose + target_part < best.score)) continue;
+                ++best.counts.target_scored;
+                score_start(static_cast<int>(pose), query, d_pose, best);
+            }
+        }
+    }
+    finish(best, query);
+    return best;
+}
+
+RetrievalResult Retriever::query_exhaustive(const RetrievalQuery& query) const {
+    RetrievalResult best;
+    best.score = k_infinity;
+    for (const ClipInfo& clip : m_clips) {
+        if (!obeys(clip, query)) continue;
+        for (int pose = clip.first_start; pose < clip.end_start; ++pose) {
+            ++best.counts.candidates_seen;
+            ++best.counts.pose_scored;
+            ++best.counts.target_scored;
+            score_start(pose, query, rms_distance(query.pose_feature, m_db.feature(pose)), best);
+        }
+    }
+    finish(best, query);
+    return best;
+}
+
+} // namespace kumite

@@ -1,0 +1,191 @@
+// Retrieval on the reference database (baked here from data/annotations/reference.json) for all five characters:
+// orders are obeyed, the height of the target shows in the chosen strike, the fast path agrees with the
+// exhaustive reference, and concurrent queries on one retriever give the single-threaded answers.
+
+#include "bake.h"
+
+#include "kumite/core/character_rig.h"
+#include "kumite/core/retrieval.h"
+#include "kumite/core/split_mix.h"
+#include "kumite/formats/bvh_reader.h"
+#include "support/test_paths.h"
+
+#include <catch2/catch.hpp>
+
+#include <thread>
+
+using namespace kumite;
+
+namespace {
+
+const MotionDatabaseContent* reference_database() {
+    static const std::optional<MotionDatabaseContent> database = []() -> std::optional<MotionDatabaseContent> {
+        if (!std::filesystem::exists(kumite::test::mocap_root() / "bandai-namco-1")) return std::nullopt;
+        Result<RawAnnotations> annotations = annotations_read_file(kumite::test::source_dir() / "data/annotations/reference.json");
+        REQUIRE(annotations.has_value());
+        bake::BakeOptions options;
+        options.mocap_root = kumite::test::mocap_root();
+        Result<bake::BakeResult> baked = bake::bake_database(*annotations, "reference.json", options);
+        REQUIRE(baked.has_value());
+        return std::move(baked->database);
+    }();
+    return database ? &*database : nullptr;
+}
+
+// A character standing at the origin in the guard, ready to query.
+struct Standing {
+    BvhFile file;
+    RestAnatomy anatomy;
+    std::unique_ptr<CharacterRig> rig;
+    std::array<float, k_feature_dimensions> feature{};
+    RetrievalQuery query;
+    double pelvis_y = 0.0, head_y = 0.0;
+
+    Standing(const std::string& name, const MotionDatabaseView& database) {
+        Result<BvhFile> read = bvh_read_file(kumite::test::source_dir() / "data/characters" / (name + ".bvh"));
+        REQUIRE(read.has_value());
+        file = std::move(*read);
+        Result<RestAnatomy> built = rest_anatomy_build(file.clip, file.body_map);
+        REQUIRE(built.has_value());
+        anatomy = std::move(*built);
+        rig = std::make_unique<CharacterRig>(file.clip.skeleton, anatomy);
+        Pose pose;
+        rig->stand_at_origin(pose, database);
+        rig->still_feature(feature);
+        query.pose_feature = feature;
+        query.heading = rig->heading();
+        query.character = rig->size();
+        pelvis_y = rig->positions()[anatomy.body_map.joint(BodyPart::pelvis)].y();
+        head_y = rig->positions()[anatomy.body_map.joint(BodyPart::head)].y();
+    }
+};
+
+const char* k_characters[] = {"kid", "scout", "brawler", "runner", "giant"};
+
+bool arm_part(int segment) { return segment >= int(BodyPart::clavicle_l) && segment <= int(BodyPart::hand_r); }
+bool left_part(int segment) { return body_part_name(static_cast<BodyPart>(segment)).ends_with("_l"); }
+
+} // namespace
+
+TEST_CASE("retrieval: orders are obeyed for every character", "[retrieval][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    if (!content) return;
+    const MotionDatabaseView db = content->view();
+    const Retriever retriever(db);
+    RetrievalWorkspace workspace = retriever.make_workspace();
+    SplitMix64 random{5};
+    for (const char* name : k_characters) {
+        Standing standing(name, db);
+        for (int i = 0; i < 60; ++i) {
+            const bool kick = i % 2;
+            const Side side = static_cast<Side>(i % 3);
+            RetrievalQuery query = standing.query;
+            query.semantics = retriever.semantics_id(kick ? "kick" : "punch");
+            query.side = side;
+            query.target_world = Eigen::Vector3d(random.uniform(-0.4, 0.4), random.uniform(standing.pelvis_y, standing.head_y),
+                                                 random.uniform(0.3, 1.0));
+            const RetrievalResult result = retriever.query(query, workspace);
+            INFO(name << " query " << i);
+            REQUIRE(result.found);
+            const DbClip& clip = db.clips[result.clip];
+            CHECK(db.string(clip.semantics) == (kick ? "kick" : "punch"));
+            CHECK(arm_part(clip.segment) == !kick); // a punch never returns a foot, a kick never a hand
+            if (side != Side::none) {
+                CHECK(clip.side == std::uint32_t(side));
+                CHECK(left_part(clip.segment) == (side == Side::left)); // a left punch never returns a right hand
+            }
+            CHECK(result.start_frame + retriever.settings().min_lead_frames <= clip.hit_frame);
+            CHECK(result.contact_frame >= result.start_frame);
+            CHECK(result.contact_frame <= clip.hit_frame);
+            CHECK(result.time_to_contact_s >= 0.0);
+        }
+        RetrievalQuery unknown = standing.query;
+        unknown.semantics = retriever.semantics_id("headbutt");
+        CHECK(unknown.semantics == -1);
+        CHECK_FALSE(retriever.query(unknown, workspace).found);
+    }
+}
+
+TEST_CASE("retrieval: a high target picks a strike that passes high, a low one a low strike", "[retrieval][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    if (!content) return;
+    const MotionDatabaseView db = content->view();
+    const Retriever retriever(db);
+    RetrievalWorkspace workspace = retriever.make_workspace();
+    for (const char* name : k_characters) {
+        Standing standing(name, db);
+        for (const char* semantics : {"punch", "kick"}) {
+            RetrievalQuery query = standing.query;
+            query.semantics = retriever.semantics_id(semantics);
+            const double high_y = standing.head_y, low_y = standing.pelvis_y;
+            query.target_world = Eigen::Vector3d(0.0, high_y, 0.6);
+            const RetrievalResult high = retriever.query(query, workspace);
+            query.target_world = Eigen::Vector3d(0.0, low_y, 0.6);
+            const RetrievalResult low = retriever.query(query, workspace);
+            INFO(name << " " << semantics << ": high contact at " << high.contact_point_world.transpose() << ", low contact at "
+                      << low.contact_point_world.transpose());
+            REQUIRE(high.found);
+            REQUIRE(low.found);
+            CHECK(high.contact_point_world.y() > low.contact_point_world.y() + 0.05);
+            CHECK(std::abs(high.contact_point_world.y() - high_y) < std::abs(low.contact_point_world.y() - high_y));
+            CHECK(high.contact_point_world.z() > 0.2); // in front
+        }
+    }
+}
+
+TEST_CASE("retrieval: the fast path agrees with the exhaustive reference", "[retrieval][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    if (!content) return;
+    const MotionDatabaseView db = content->view();
+    const Retriever retriever(db);
+    RetrievalWorkspace workspace = retriever.make_workspace();
+    SplitMix64 random{17};
+    int agreed = 0, total = 0;
+    for (const char* name : k_characters) {
+        Standing standing(name, db);
+        for (int i = 0; i < 100; ++i) {
+            RetrievalQuery query = standing.query;
+            query.semantics = retriever.semantics_id(i % 3 == 0 ? "kick" : i % 3 == 1 ? "punch" : "slash");
+            query.side = static_cast<Side>(i % 3);
+            query.target_world = Eigen::Vector3d(random.uniform(-0.6, 0.6), random.uniform(0.3, 2.2), random.uniform(-0.2, 1.5));
+            const RetrievalResult fast = retriever.query(query, workspace);
+            const RetrievalResult exhaustive = retriever.query_exhaustive(query);
+            REQUIRE(fast.found == exhaustive.found);
+            ++total;
+            agreed += fast.score <= exhaustive.score * (1.0 + 1e-9) + 1e-12;
+            CHECK(fast.counts.target_scored <= exhaustive.counts.target_scored);
+        }
+    }
+    CHECK(agreed == total);
+}
+
+TEST_CASE("retrieval: concurrent queries on one retriever give the single-threaded answers", "[retrieval][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    if (!content) return;
+    const MotionDatabaseView db = content->view();
+    const Retriever retriever(db);
+    Standing standing("runner", db);
+    std::vector<RetrievalQuery> queries;
+    SplitMix64 random{23};
+    for (int i = 0; i < 400; ++i) {
+        RetrievalQuery query = standing.query;
+        query.semantics = retriever.semantics_id(i % 2 ? "kick" : "punch");
+        query.target_world = Eigen::Vector3d(random.uniform(-0.5, 0.5), random.uniform(0.8, 1.8), random.uniform(0.3, 1.0));
+        queries.push_back(query);
+    }
+    std::vector<RetrievalResult> alone(queries.size()), together(queries.size());
+    RetrievalWorkspace workspace = retriever.make_workspace();
+    for (std::size_t i = 0; i < queries.size(); ++i) alone[i] = retriever.query(queries[i], workspace);
+    auto run = [&](std::size_t first) {
+        RetrievalWorkspace own = retriever.make_workspace();
+        for (std::size_t i = first; i < queries.size(); i += 2) together[i] = retriever.query(queries[i], own);
+    };
+    std::thread other(run, 1);
+    run(0);
+    other.join();
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+        CHECK(together[i].clip == alone[i].clip);
+        CHECK(together[i].start_frame == alone[i].start_frame);
+        CHECK(together[i].score == alone[i].score);
+    }
+}
