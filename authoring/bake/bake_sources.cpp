@@ -61,7 +61,9 @@ Result<std::vector<BakeSource>> bake_read_sources(const RawAnnotations& annotati
         if (!anatomy) return fail(source.path.string() + ": " + anatomy.error().message);
         source.anatomy = std::move(*anatomy);
         if (mirrored[index]) {
-            Result<MirrorSymmetry> symmetry = mirror_symmetry_find(source.file.clip.skeleton);
+            std::vector<bool> animated;
+            for (const BvhJointChannels& joint : source.file.layout.joints) animated.push_back(joint.has_position());
+            Result<MirrorSymmetry> symmetry = mirror_symmetry_find(source.file.clip.skeleton, 1e-3, 0.1, animated);
             if (!symmetry) return fail("cannot mirror " + source.path.string() + ": " + symmetry.error().message);
             source.symmetry = std::move(*symmetry);
         }

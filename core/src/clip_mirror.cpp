@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 #include <string>
 
 namespace kumite {
@@ -16,11 +17,13 @@ Eigen::Matrix3d householder(const Eigen::Vector3d& normal) {
 }
 
 // Offsets below `joint` paired with their partners' (children, then the first End Sites).
-std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> child_offset_pairs(const Skeleton& skeleton,
-                                                                            const std::vector<int>& partner, int joint) {
+std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> child_offset_pairs(const Skeleton& skeleton, const std::vector<int>& partner,
+                                                                            int joint, const std::vector<bool>& animated) {
     std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> pairs;
+    auto is_animated = [&](int j) { return j < static_cast<int>(animated.size()) && animated[j]; };
     for (int child = joint + 1; child < skeleton.joint_count(); ++child) {
-        if (skeleton.parents[child] == joint) pairs.emplace_back(skeleton.rest_offsets[child], skeleton.rest_offsets[partner[child]]);
+        if (skeleton.parents[child] != joint || is_animated(child) || is_animated(partner[child])) continue;
+        pairs.emplace_back(skeleton.rest_offsets[child], skeleton.rest_offsets[partner[child]]);
     }
     const EndSite* own = nullptr;
     const EndSite* theirs = nullptr;
@@ -32,6 +35,44 @@ std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> child_offset_pairs(cons
     return pairs;
 }
 
+
+// The reflection in `joint`'s rest frame that best maps its child offsets onto their partners', if one fits.
+// Real bodies are not exactly symmetric: offsets pair up by direction; their lengths may differ. A candidate's
+// misfit is its worst direction error (infinite when a short offset meets a long one). The best fit wins (a
+// bone on the mirror plane fits several reflections loosely, the right one closely); exact ties go to the
+// earlier candidate, the parent's reflection before the axes.
+std::optional<Eigen::Matrix3d> best_reflection(const Skeleton& skeleton, const MirrorSymmetry& symmetry, int joint,
+                                               const std::vector<bool>& skip_animated, double tolerance_m, double direction_tolerance) {
+    const auto pairs = child_offset_pairs(skeleton, symmetry.partner, joint, skip_animated);
+    auto misfit = [&](const Eigen::Matrix3d& candidate) {
+        double worst = 0.0;
+        for (const auto& [own, theirs] : pairs) {
+            const bool own_short = own.norm() <= tolerance_m, theirs_short = theirs.norm() <= tolerance_m;
+            if (own_short != theirs_short) return std::numeric_limits<double>::infinity();
+            if (!own_short) worst = std::max(worst, (candidate * own.normalized() - theirs.normalized()).norm());
+        }
+        return worst;
+    };
+    std::vector<Eigen::Matrix3d> candidates;
+    for (const auto& [own, theirs] : pairs) {
+        if (own.norm() <= tolerance_m || theirs.norm() <= tolerance_m) continue;
+        const Eigen::Vector3d normal = own.normalized() - theirs.normalized();
+        if (normal.norm() > direction_tolerance) candidates.push_back(householder(normal)); // else the parent's may do
+    }
+    candidates.push_back(joint > 0 ? symmetry.local_reflections[skeleton.parents[joint]] : symmetry.reflection);
+    for (int axis = 0; axis < 3; ++axis) candidates.push_back(householder(Eigen::Vector3d::Unit(axis)));
+    std::optional<Eigen::Matrix3d> found;
+    double best = direction_tolerance;
+    for (const Eigen::Matrix3d& candidate : candidates) {
+        const double error = misfit(candidate);
+        if (error < best - 1e-12 || (!found && error <= best)) {
+            best = error;
+            found = candidate;
+        }
+    }
+    return found;
+}
+
 } // namespace
 
 Eigen::Quaterniond MirrorSymmetry::mirror_local_rotation(int joint, const Eigen::Quaterniond& partner_rotation, int parent) const {
@@ -39,7 +80,8 @@ Eigen::Quaterniond MirrorSymmetry::mirror_local_rotation(int joint, const Eigen:
     return Eigen::Quaterniond(Eigen::Matrix3d(before * partner_rotation.toRotationMatrix() * local_reflections[joint])).normalized();
 }
 
-Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, double tolerance_m, double direction_tolerance) {
+Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, double tolerance_m, double direction_tolerance,
+                                            const std::vector<bool>& translation_animated) {
     const int joints = skeleton.joint_count();
     MirrorSymmetry symmetry;
     symmetry.partner.assign(joints, -1);
@@ -67,38 +109,12 @@ Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, double tol
 
     symmetry.local_reflections.assign(joints, symmetry.reflection);
     for (int joint = 0; joint < joints; ++joint) {
-        const auto pairs = child_offset_pairs(skeleton, symmetry.partner, joint);
-        // Real bodies are not exactly symmetric: offsets pair up by direction; their lengths may differ. A
-        // candidate's misfit is its worst direction error (infinite when a short offset meets a long one).
-        auto misfit = [&](const Eigen::Matrix3d& candidate) {
-            double worst = 0.0;
-            for (const auto& [own, theirs] : pairs) {
-                const bool own_short = own.norm() <= tolerance_m, theirs_short = theirs.norm() <= tolerance_m;
-                if (own_short != theirs_short) return std::numeric_limits<double>::infinity();
-                if (!own_short) worst = std::max(worst, (candidate * own.normalized() - theirs.normalized()).norm());
-            }
-            return worst;
-        };
-        std::vector<Eigen::Matrix3d> candidates;
-        for (const auto& [own, theirs] : pairs) {
-            if (own.norm() <= tolerance_m || theirs.norm() <= tolerance_m) continue;
-            const Eigen::Vector3d normal = own.normalized() - theirs.normalized();
-            if (normal.norm() > direction_tolerance) candidates.push_back(householder(normal)); // else the parent's may do
+        // First with every child offset; when they do not fit, without the offsets the motion replaces.
+        std::optional<Eigen::Matrix3d> found = best_reflection(skeleton, symmetry, joint, {}, tolerance_m, direction_tolerance);
+        if (!found && !translation_animated.empty()) {
+            found = best_reflection(skeleton, symmetry, joint, translation_animated, tolerance_m, direction_tolerance);
         }
-        candidates.push_back(joint > 0 ? symmetry.local_reflections[skeleton.parents[joint]] : symmetry.reflection);
-        for (int axis = 0; axis < 3; ++axis) candidates.push_back(householder(Eigen::Vector3d::Unit(axis)));
-        // The best fit wins (a bone on the mirror plane fits several reflections loosely, the right one
-        // closely); exact ties go to the earlier candidate, the parent's reflection before the axes.
-        auto found = candidates.end();
-        double best = direction_tolerance;
-        for (auto candidate = candidates.begin(); candidate != candidates.end(); ++candidate) {
-            const double error = misfit(*candidate);
-            if (error < best - 1e-12 || (found == candidates.end() && error <= best)) {
-                best = error;
-                found = candidate;
-            }
-        }
-        if (found == candidates.end()) {
+        if (!found) {
             return make_error(ErrorCode::invalid, "the joints below " + skeleton.names[joint] + " and " +
                                                       skeleton.names[symmetry.partner[joint]] + " are not mirror images");
         }

@@ -28,7 +28,12 @@ struct MirrorSymmetry {
 // partner's, and an offset shorter than `tolerance_m` must have a short partner. Lengths may differ: captured
 // skeletons are measured on real, slightly asymmetric bodies (CMU's finger bases differ by 10%); the mirrored
 // motion keeps each side's own bone lengths.
-Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, double tolerance_m = 1e-3, double direction_tolerance = 0.1);
+// `translation_animated` ([joint], may be empty) marks joints whose offset the motion replaces (BVH position
+// channels): when a joint's child offsets do not fit, it is tried again without those, whose rest offsets then
+// say nothing about symmetry (Bandai's dance captures put the hips' rest offset 11 cm off the midline, then
+// animate it).
+Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, double tolerance_m = 1e-3, double direction_tolerance = 0.1,
+                                            const std::vector<bool>& translation_animated = {});
 
 Clip clip_mirror(const Clip& clip, const MirrorSymmetry& symmetry);
 
