@@ -21,19 +21,15 @@ PoseClusters pose_clusters_compute(std::span<const float> features, int k, std::
     space.point_count = n;
     space.seed_centroid = [&](int c, int i) { std::copy_n(pose(i).begin(), dims, centroid(c).begin()); };
     space.distance = [&](int i, int c) { return pose_feature_distance(centroid(c), pose(i)); };
-    std::vector<double> sum(dims);
+    std::vector<Eigen::Vector3d> sum(k_feature_cloud_size);
     space.update_centroid = [&](int c, std::span<const int> members) {
-        std::fill(sum.begin(), sum.end(), 0.0);
+        std::fill(sum.begin(), sum.end(), Eigen::Vector3d::Zero());
         const std::span<float> centre = centroid(c);
         for (int i : members) {
             const FloorAlignment onto_centre = pose_feature_alignment(centre, pose(i));
-            const std::span<const float> member = pose(i);
-            for (int p = 0; p < dims; p += 3) {
-                const Eigen::Vector3d aligned = onto_centre.apply(Eigen::Vector3d(member[p], member[p + 1], member[p + 2]));
-                for (int axis = 0; axis < 3; ++axis) sum[p + axis] += aligned[axis];
-            }
+            for (int p = 0; p < k_feature_cloud_size; ++p) sum[p] += onto_centre.apply(pose_feature_point(pose(i), p));
         }
-        for (int d = 0; d < dims; ++d) centre[d] = static_cast<float>(sum[d] / static_cast<double>(members.size()));
+        for (int p = 0; p < k_feature_cloud_size; ++p) pose_feature_set_point(centre, p, sum[p] / static_cast<double>(members.size()));
     };
     KMeansAssignment result = kmeans_run(space, clusters.k, seed, max_iterations, threads, progress);
     clusters.assignment = std::move(result.assignment);

@@ -26,8 +26,11 @@ inline constexpr std::array<BodyPart, 13> k_feature_parts = {
     BodyPart::foot_l,      BodyPart::shin_r,    BodyPart::foot_r};
 inline constexpr int k_feature_point_count = static_cast<int>(k_feature_parts.size());
 inline constexpr int k_feature_window = 3; // frames per feature: t - 2 stride, t - stride, t
-inline constexpr int k_feature_cloud_size = k_feature_point_count * k_feature_window;
-inline constexpr int k_feature_dimensions = k_feature_cloud_size * 3;
+inline constexpr int k_feature_cloud_size = k_feature_point_count * k_feature_window; // 39 points
+// A feature is planar, for SIMD: 40 x values (the 39 points, point = sample * 13 + part, then a 0), 40 y, 40 z.
+inline constexpr int k_feature_axis_stride = 40;
+inline constexpr int k_feature_dimensions = 3 * k_feature_axis_stride;
+static_assert(k_feature_axis_stride >= k_feature_cloud_size && k_feature_axis_stride % 8 == 0);
 
 struct DbString {
     std::uint32_t offset = 0; // into the string table

@@ -21,6 +21,10 @@ void pose_feature_points(std::span<Eigen::Vector3d> out, const BodyMap& body_map
 void pose_feature_build(std::span<float> out, std::span<const Eigen::Vector3d> window_points, const HeadingFrame& newest_heading,
                         double leg_length);
 
+// Point `point` (0 .. k_feature_cloud_size - 1) of a planar feature, and its setter.
+Eigen::Vector3d pose_feature_point(std::span<const float> feature, int point);
+void pose_feature_set_point(std::span<float> feature, int point, const Eigen::Vector3d& value);
+
 // Kovar's distance between two features (sum of squared distances in leg lengths), minimised over a rotation
 // about Y and a floor translation in closed form; no trigonometry.
 double pose_feature_distance(std::span<const float> a, std::span<const float> b);
