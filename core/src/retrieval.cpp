@@ -12,6 +12,9 @@ namespace {
 
 constexpr double k_infinity = std::numeric_limits<double>::infinity();
 constexpr Side k_sides[] = {Side::none, Side::left, Side::right};
+// Slack for float rounding in the bounds (distances are computed from float features): a bound never exceeds the
+// exact value by more than this, in leg lengths.
+constexpr double k_rounding_slack = 1e-3;
 
 // Kovar's distance as an RMS over the feature's points: a metric (see the header), in leg lengths.
 double rms_distance(std::span<const float> a, std::span<const float> b) {
@@ -35,7 +38,7 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
         const std::string_view name = m_db.string(clip.semantics);
         if (std::find(m_semantics_names.begin(), m_semantics_names.end(), name) == m_semantics_names.end()) m_semantics_names.push_back(name);
     }
-    m_order_keys = static_cast<int>(m_semantics_names.size()) * 3;
+    m_order_keys = static_cast<int>(m_semantics_names.size()) * 3 * 2;
 
     m_clips.resize(m_db.clips.size());
     for (std::size_t c = 0; c < m_db.clips.size(); ++c) {
@@ -48,7 +51,8 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
         if (db_clip_is_strike(clip)) info.end_start += std::max(0, clip.hit_frame - m_settings.min_lead_frames + 1);
         const DbActor& actor = m_db.actors[clip.actor];
         info.actor_leg_length = actor.leg_length_m;
-        info.actor_arm_length = actor.arm_length_m;
+        const bool by_arm = m_settings.scaling == RetrievalScaling::limb_length && info.arm_strike;
+        info.actor_scale_length = by_arm ? actor.arm_length_m : actor.leg_length_m;
     }
 
     m_poses.resize(m_db.poses.size());
@@ -58,7 +62,8 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
     }
     const int clusters = static_cast<int>(m_db.clusters.size());
     m_cluster_radius.resize(clusters);
-    m_candidate_ranges.assign(std::size_t(clusters) * m_order_keys + 1, 0);
+    m_group_begin.assign(std::size_t(clusters) * m_order_keys + 1, 0);
+    m_group_boxes.assign(std::size_t(clusters) * m_order_keys, AlignedBox{});
     for (int c = 0; c < clusters; ++c) {
         const DbCluster& cluster = m_db.clusters[c];
         double radius = 0.0;
@@ -69,19 +74,25 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
             radius = std::max(radius, distance);
         }
         m_cluster_radius[c] = static_cast<float>(radius);
-        // Candidate starts grouped by order key, in member order within a key.
         for (int key = 0; key < m_order_keys; ++key) {
-            m_candidate_ranges[std::size_t(c) * m_order_keys + key] = static_cast<std::uint32_t>(m_candidates.size());
+            const std::size_t group = std::size_t(c) * m_order_keys + key;
+            m_group_begin[group] = static_cast<std::uint32_t>(m_candidates.size());
             for (std::uint32_t m = 0; m < cluster.member_count; ++m) {
                 const std::uint32_t pose = m_db.members[cluster.first_member + m];
                 const ClipInfo& clip = m_clips[m_db.poses[pose].clip];
-                if (int(pose) >= clip.first_start && int(pose) < clip.end_start && order_key(clip.semantics, clip.side) == key) {
-                    m_candidates.push_back(pose);
+                if (int(pose) < clip.first_start || int(pose) >= clip.end_start || order_key(clip.semantics, clip.side, clip.arm_strike) != key) {
+                    continue;
                 }
+                m_candidates.push_back(pose);
+                const DbPose& start = m_db.poses[pose];
+                const Eigen::Vector3d box_min(start.start_box_min[0], start.start_box_min[1], start.start_box_min[2]);
+                const Eigen::Vector3d box_max(start.start_box_max[0], start.start_box_max[1], start.start_box_max[2]);
+                m_group_boxes[group].extend(box_min / clip.actor_scale_length);
+                m_group_boxes[group].extend(box_max / clip.actor_scale_length);
             }
         }
     }
-    m_candidate_ranges.back() = static_cast<std::uint32_t>(m_candidates.size());
+    m_group_begin.back() = static_cast<std::uint32_t>(m_candidates.size());
 }
 
 int Retriever::semantics_id(std::string_view semantics) const {
@@ -91,7 +102,7 @@ int Retriever::semantics_id(std::string_view semantics) const {
 
 RetrievalWorkspace Retriever::make_workspace() const {
     RetrievalWorkspace workspace;
-    workspace.cluster_order.resize(m_db.clusters.size());
+    workspace.group_order.resize(m_db.clusters.size() * 3 * 2); // every side and limb of one semantics
     workspace.centroid_distance.resize(m_db.clusters.size());
     return workspace;
 }
@@ -100,9 +111,12 @@ bool Retriever::obeys(const ClipInfo& clip, const RetrievalQuery& query) const {
     return clip.semantics == query.semantics && (query.side == Side::none || clip.side == query.side);
 }
 
+double Retriever::character_scale_length(bool arm, const CharacterSize& character) const {
+    return m_settings.scaling == RetrievalScaling::limb_length && arm ? character.arm_length_m : character.leg_length_m;
+}
+
 double Retriever::scale_to_character(const ClipInfo& clip, const CharacterSize& character) const {
-    if (m_settings.scaling == RetrievalScaling::limb_length && clip.arm_strike) return character.arm_length_m / clip.actor_arm_length;
-    return character.leg_length_m / clip.actor_leg_length;
+    return character_scale_length(clip.arm_strike, character) / clip.actor_scale_length;
 }
 
 double Retriever::box_distance(const DbPose& pose, const Eigen::Vector3d& target) const {
@@ -168,43 +182,60 @@ void Retriever::finish(RetrievalResult& result, const RetrievalQuery& query) con
     result.contact_point_world = query.heading.to_world(contact_in_start * scale_to_character(clip, query.character));
 }
 
+void Retriever::visit_group(int group, double centroid_distance, const RetrievalQuery& query, const Eigen::Vector3d& target_in_heading,
+                            RetrievalResult& best) const {
+    for (std::uint32_t k = m_group_begin[group]; k < m_group_begin[group + 1]; ++k) {
+        const std::uint32_t pose = m_candidates[k];
+        ++best.counts.candidates_seen;
+        const ClipInfo& clip = m_clips[m_db.poses[pose].clip];
+        const double scale = scale_to_character(clip, query.character);
+        const double box = box_distance(m_db.poses[pose], target_in_heading / scale) * scale / query.character.leg_length_m;
+        best.counts.inside_box += box == 0.0;
+        const double pose_bound = std::max(0.0, std::abs(centroid_distance - m_poses[pose].distance_to_centroid) - k_rounding_slack);
+        const double target_part = m_settings.target_weight * box;
+        if (!(m_settings.pose_weight * pose_bound + target_part < best.score)) continue;
+        ++best.counts.pose_scored;
+        const double d_pose = rms_distance(query.pose_feature, m_db.feature(pose));
+        if (!(m_settings.pose_weight * d_pose + target_part < best.score)) continue;
+        ++best.counts.target_scored;
+        score_start(static_cast<int>(pose), query, d_pose, best);
+    }
+}
+
 RetrievalResult Retriever::query(const RetrievalQuery& query, RetrievalWorkspace& workspace) const {
     assert(query.pose_feature.size() == std::size_t(k_feature_dimensions));
     RetrievalResult best;
     best.score = k_infinity;
     if (query.semantics < 0 || query.semantics >= static_cast<int>(m_semantics_names.size())) return best;
+    const Eigen::Vector3d target_in_heading = query.heading.to_heading(query.target_world);
+    // Lower bounds per group: the pose part from the triangle inequality through the centroid, the target part
+    // from the group's union box; groups are then visited best bound first.
+    std::size_t groups = 0;
     const int clusters = static_cast<int>(m_db.clusters.size());
     for (int c = 0; c < clusters; ++c) {
         const double distance = rms_distance(m_db.centroid(c), query.pose_feature);
         workspace.centroid_distance[c] = distance;
-        workspace.cluster_order[c] = {m_settings.pose_weight * std::max(0.0, distance - m_cluster_radius[c] * (1.0 + 1e-5) - 1e-6), c};
-    }
-    std::sort(workspace.cluster_order.begin(), workspace.cluster_order.end());
-    const Eigen::Vector3d target_in_heading = query.heading.to_heading(query.target_world);
-    for (const auto& [cluster_bound, c] : workspace.cluster_order) {
-        if (!(cluster_bound < best.score)) break; // no member of this or a later cluster can do better
-        ++best.counts.clusters_visited;
-        const double centroid_distance = workspace.centroid_distance[c];
+        const double pose_bound = std::max(0.0, distance - m_cluster_radius[c] - k_rounding_slack);
         for (Side side : k_sides) {
             if (query.side != Side::none && side != query.side) continue;
-            const std::size_t range = std::size_t(c) * m_order_keys + order_key(query.semantics, side);
-            for (std::uint32_t k = m_candidate_ranges[range]; k < m_candidate_ranges[range + 1]; ++k) {
-                const std::uint32_t pose = m_candidates[k];
-                ++best.counts.candidates_seen;
-                const ClipInfo& clip = m_clips[m_db.poses[pose].clip];
-                const double scale = scale_to_character(clip, query.character);
-                const double box = box_distance(m_db.poses[pose], target_in_heading / scale) * scale / query.character.leg_length_m;
-                best.counts.inside_box += box == 0.0;
-                const double pose_bound = std::max(0.0, std::abs(centroid_distance - m_poses[pose].distance_to_centroid) - 1e-5);
-                const double target_part = m_settings.target_weight * box;
-                if (!(m_settings.pose_weight * pose_bound + target_part < best.score)) continue;
-                ++best.counts.pose_scored;
-                const double d_pose = rms_distance(query.pose_feature, m_db.feature(pose));
-                if (!(m_settings.pose_weight * d_pose + target_part < best.score)) continue;
-                ++best.counts.target_scored;
-                score_start(static_cast<int>(pose), query, d_pose, best);
+            for (bool arm : {false, true}) {
+                const int group = c * m_order_keys + order_key(query.semantics, side, arm);
+                if (m_group_begin[group] == m_group_begin[group + 1]) continue;
+                const double length = character_scale_length(arm, query.character);
+                const double target_bound = m_group_boxes[group].distance_to(target_in_heading / length) * length / query.character.leg_length_m;
+                workspace.group_order[groups++] = {m_settings.pose_weight * pose_bound + m_settings.target_weight * target_bound, group};
             }
         }
+    }
+    std::sort(workspace.group_order.begin(), workspace.group_order.begin() + groups);
+    int last_cluster = -1;
+    for (std::size_t g = 0; g < groups; ++g) {
+        const auto [bound, group] = workspace.group_order[g];
+        if (!(bound < best.score)) break; // no candidate of this or a later group can do better
+        const int cluster = group / m_order_keys;
+        best.counts.clusters_visited += cluster != last_cluster;
+        last_cluster = cluster;
+        visit_group(group, workspace.centroid_distance[cluster], query, target_in_heading, best);
     }
     finish(best, query);
     return best;

@@ -23,6 +23,7 @@
 // Queries do not allocate (each thread brings its RetrievalWorkspace) and may run concurrently on one Retriever.
 
 #include "kumite/core/heading_frame.h"
+#include "kumite/core/hit_trajectory.h"
 #include "kumite/core/motion_database.h"
 #include "kumite/core/pose_distance.h"
 
@@ -88,8 +89,8 @@ struct RetrievalResult {
 
 // Per-thread scratch space of a query (sized once by Retriever::make_workspace; queries then never allocate).
 struct RetrievalWorkspace {
-    std::vector<std::pair<double, int>> cluster_order; // [cluster] (lower bound, cluster)
-    std::vector<double> centroid_distance;             // [cluster] sqrt(Kovar / points)
+    std::vector<std::pair<double, int>> group_order; // (lower bound, group) of the groups a query may visit
+    std::vector<double> centroid_distance;           // [cluster] sqrt(Kovar / points)
 };
 
 class Retriever {
@@ -117,20 +118,25 @@ private:
         int first_start = 0; // pose indices of its candidate starts: [first_start, end_start)
         int end_start = 0;
         double actor_leg_length = 1.0;
-        double actor_arm_length = 1.0;
+        double actor_scale_length = 1.0; // the actor length that scaling divides by (leg, or the striking limb)
     };
     struct PoseInfo {
         float distance_to_centroid = 0.0f; // sqrt(Kovar / points), leg lengths
         float heading_cos = 1.0f, heading_sin = 0.0f;
     };
-    // Candidate starts of cluster c and order key k: m_candidates[m_candidate_ranges[c * keys + k] ...].
-    int order_key(int semantics, Side side) const { return semantics * 3 + static_cast<int>(side); }
+    // A group is the candidate starts of one cluster for one order key (semantics, side, arm or leg strike):
+    // m_candidates[m_group_begin[g] .. m_group_begin[g + 1]), g = cluster * m_order_keys + key, with the union of
+    // their hit-path boxes divided by each actor's scale length.
+    int order_key(int semantics, Side side, bool arm) const { return (semantics * 3 + static_cast<int>(side)) * 2 + arm; }
+    double character_scale_length(bool arm, const CharacterSize& character) const;
 
     bool obeys(const ClipInfo& clip, const RetrievalQuery& query) const;
     double scale_to_character(const ClipInfo& clip, const CharacterSize& character) const;
     double box_distance(const DbPose& pose, const Eigen::Vector3d& target_in_start) const;
     // Scores one start exactly; returns false when its score cannot beat `best` (left untouched then).
     bool score_start(int pose_index, const RetrievalQuery& query, double d_pose, RetrievalResult& best) const;
+    void visit_group(int group, double centroid_distance, const RetrievalQuery& query, const Eigen::Vector3d& target_in_heading,
+                     RetrievalResult& best) const;
     void finish(RetrievalResult& result, const RetrievalQuery& query) const;
 
     MotionDatabaseView m_db;
@@ -140,7 +146,8 @@ private:
     std::vector<PoseInfo> m_poses;
     std::vector<float> m_cluster_radius;     // sqrt(radius / points)
     std::vector<std::uint32_t> m_candidates; // pose indices grouped by cluster, then order key
-    std::vector<std::uint32_t> m_candidate_ranges; // [cluster * keys + key] begin; one more entry at the end
+    std::vector<std::uint32_t> m_group_begin; // [group], one more entry at the end
+    std::vector<AlignedBox> m_group_boxes;   // [group] in scale lengths
     int m_order_keys = 0;
 };
 
