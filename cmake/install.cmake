@@ -7,7 +7,7 @@ include(CMakePackageConfigHelpers)
 install(TARGETS kumite_core kumite_formats kumite_runtime EXPORT kumiteTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-install(DIRECTORY core/include/ formats/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY core/include/ formats/include/ runtime/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS kumite RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(EXPORT kumiteTargets NAMESPACE kumite:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/kumite)
 
