@@ -4,7 +4,7 @@
 #   scripts/setup.sh --test   also what the tests use (Blender for the BVH import check, clang for fuzzing)
 set -euo pipefail
 
-packages=(build-essential cmake g++ libeigen3-dev nlohmann-json3-dev catch2 python3 libopenexr-dev)
+packages=(build-essential cmake g++ libeigen3-dev nlohmann-json3-dev catch2 python3 libopenexr-dev libflann-dev)
 if [[ "${1:-}" == "--test" ]]; then
   packages+=(blender clang-14 libfuzzer-14-dev openexr)
 fi

@@ -83,16 +83,34 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
                 if (int(pose) < clip.first_start || int(pose) >= clip.end_start || order_key(clip.semantics, clip.side, clip.arm_strike) != key) {
                     continue;
                 }
-                m_candidates.push_back(pose);
                 const DbPose& start = m_db.poses[pose];
-                const Eigen::Vector3d box_min(start.start_box_min[0], start.start_box_min[1], start.start_box_min[2]);
-                const Eigen::Vector3d box_max(start.start_box_max[0], start.start_box_max[1], start.start_box_max[2]);
-                m_group_boxes[group].extend(box_min / clip.actor_scale_length);
-                m_group_boxes[group].extend(box_max / clip.actor_scale_length);
+                Candidate candidate{};
+                for (int axis = 0; axis < 3; ++axis) {
+                    candidate.box_min[axis] = static_cast<float>(start.start_box_min[axis] / clip.actor_scale_length);
+                    candidate.box_max[axis] = static_cast<float>(start.start_box_max[axis] / clip.actor_scale_length);
+                }
+                candidate.distance_to_centroid = m_poses[pose].distance_to_centroid;
+                candidate.pose = pose;
+                m_candidates.push_back(candidate);
+                m_group_boxes[group].extend(Eigen::Vector3d(candidate.box_min[0], candidate.box_min[1], candidate.box_min[2]));
+                m_group_boxes[group].extend(Eigen::Vector3d(candidate.box_max[0], candidate.box_max[1], candidate.box_max[2]));
             }
         }
     }
     m_group_begin.back() = static_cast<std::uint32_t>(m_candidates.size());
+    m_order_counts.assign(m_order_keys, 0);
+    for (std::size_t group = 0; group + 1 < m_group_begin.size(); ++group) {
+        m_order_counts[group % m_order_keys] += static_cast<int>(m_group_begin[group + 1] - m_group_begin[group]);
+    }
+}
+
+int Retriever::candidate_count(int semantics, Side side) const {
+    int count = 0;
+    for (Side each : k_sides) {
+        if (side != Side::none && each != side) continue;
+        for (bool arm : {false, true}) count += m_order_counts[order_key(semantics, each, arm)];
+    }
+    return count;
 }
 
 int Retriever::semantics_id(std::string_view semantics) const {
@@ -117,16 +135,6 @@ double Retriever::character_scale_length(bool arm, const CharacterSize& characte
 
 double Retriever::scale_to_character(const ClipInfo& clip, const CharacterSize& character) const {
     return character_scale_length(clip.arm_strike, character) / clip.actor_scale_length;
-}
-
-double Retriever::box_distance(const DbPose& pose, const Eigen::Vector3d& target) const {
-    double squared = 0.0;
-    for (int axis = 0; axis < 3; ++axis) {
-        const double below = pose.start_box_min[axis] - target[axis], above = target[axis] - pose.start_box_max[axis];
-        const double outside = std::max({below, above, 0.0});
-        squared += outside * outside;
-    }
-    return std::sqrt(squared);
 }
 
 bool Retriever::score_start(int pose_index, const RetrievalQuery& query, double d_pose, RetrievalResult& best) const {
@@ -182,23 +190,34 @@ void Retriever::finish(RetrievalResult& result, const RetrievalQuery& query) con
     result.contact_point_world = query.heading.to_world(contact_in_start * scale_to_character(clip, query.character));
 }
 
-void Retriever::visit_group(int group, double centroid_distance, const RetrievalQuery& query, const Eigen::Vector3d& target_in_heading,
-                            RetrievalResult& best) const {
+void Retriever::visit_group(int group, bool arm, double centroid_distance, const RetrievalQuery& query,
+                            const Eigen::Vector3d& target_in_heading, RetrievalResult& best) const {
+    // In the group's units (scale lengths) the target is one point for every actor, and a box distance times
+    // to_score is the target part of a candidate's lower bound.
+    const double length = character_scale_length(arm, query.character);
+    const Eigen::Vector3f target = (target_in_heading / length).cast<float>();
+    const double to_score = m_settings.target_weight * length / query.character.leg_length_m;
+    const double pose_weight = m_settings.pose_weight;
     for (std::uint32_t k = m_group_begin[group]; k < m_group_begin[group + 1]; ++k) {
-        const std::uint32_t pose = m_candidates[k];
+        const Candidate& candidate = m_candidates[k];
         ++best.counts.candidates_seen;
-        const ClipInfo& clip = m_clips[m_db.poses[pose].clip];
-        const double scale = scale_to_character(clip, query.character);
-        const double box = box_distance(m_db.poses[pose], target_in_heading / scale) * scale / query.character.leg_length_m;
-        best.counts.inside_box += box == 0.0;
-        const double pose_bound = std::max(0.0, std::abs(centroid_distance - m_poses[pose].distance_to_centroid) - k_rounding_slack);
-        const double target_part = m_settings.target_weight * box;
-        if (!(m_settings.pose_weight * pose_bound + target_part < best.score)) continue;
+        const double pose_part =
+            centroid_distance < 0.0 ? 0.0 : pose_weight * std::max(0.0, std::abs(centroid_distance - candidate.distance_to_centroid) - k_rounding_slack);
+        if (!(pose_part < best.score)) continue;
+        float squared = 0.0f;
+        for (int axis = 0; axis < 3; ++axis) {
+            const float outside = std::max({candidate.box_min[axis] - target[axis], target[axis] - candidate.box_max[axis], 0.0f});
+            squared += outside * outside;
+        }
+        best.counts.inside_box += squared == 0.0f;
+        // Float box distances may fall short by rounding; the slack keeps the bound a bound.
+        const double target_part = to_score * std::max(0.0, std::sqrt(static_cast<double>(squared)) - k_rounding_slack);
+        if (!(pose_part + target_part < best.score)) continue;
         ++best.counts.pose_scored;
-        const double d_pose = rms_distance(query.pose_feature, m_db.feature(pose));
-        if (!(m_settings.pose_weight * d_pose + target_part < best.score)) continue;
+        const double d_pose = rms_distance(query.pose_feature, m_db.feature(candidate.pose));
+        if (!(pose_weight * d_pose + target_part < best.score)) continue;
         ++best.counts.target_scored;
-        score_start(static_cast<int>(pose), query, d_pose, best);
+        score_start(static_cast<int>(candidate.pose), query, d_pose, best);
     }
 }
 
@@ -208,10 +227,20 @@ RetrievalResult Retriever::query(const RetrievalQuery& query, RetrievalWorkspace
     best.score = k_infinity;
     if (query.semantics < 0 || query.semantics >= static_cast<int>(m_semantics_names.size())) return best;
     const Eigen::Vector3d target_in_heading = query.heading.to_heading(query.target_world);
+    const int clusters = static_cast<int>(m_db.clusters.size());
+    if (candidate_count(query.semantics, query.side) <= m_settings.scan_below) { // small order: scan it
+        for (int c = 0; c < clusters; ++c) {
+            for (Side side : k_sides) {
+                if (query.side != Side::none && side != query.side) continue;
+                for (bool arm : {false, true}) visit_group(c * m_order_keys + order_key(query.semantics, side, arm), arm, -1.0, query, target_in_heading, best);
+            }
+        }
+        finish(best, query);
+        return best;
+    }
     // Lower bounds per group: the pose part from the triangle inequality through the centroid, the target part
     // from the group's union box; groups are then visited best bound first.
     std::size_t groups = 0;
-    const int clusters = static_cast<int>(m_db.clusters.size());
     for (int c = 0; c < clusters; ++c) {
         const double distance = rms_distance(m_db.centroid(c), query.pose_feature);
         workspace.centroid_distance[c] = distance;
@@ -235,7 +264,7 @@ RetrievalResult Retriever::query(const RetrievalQuery& query, RetrievalWorkspace
         const int cluster = group / m_order_keys;
         best.counts.clusters_visited += cluster != last_cluster;
         last_cluster = cluster;
-        visit_group(group, workspace.centroid_distance[cluster], query, target_in_heading, best);
+        visit_group(group, group % 2 == 1, workspace.centroid_distance[cluster], query, target_in_heading, best);
     }
     finish(best, query);
     return best;

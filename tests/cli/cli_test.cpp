@@ -289,3 +289,58 @@ TEST_CASE("cli: bake usage and input errors leave no file behind", "[cli]") {
     CHECK_FALSE(std::filesystem::exists(out));
     CHECK(std::distance(std::filesystem::directory_iterator(folder), std::filesystem::directory_iterator{}) == 0);
 }
+
+TEST_CASE("cli: query answers with the contract's keys, for one target, a targets file and the exhaustive search", "[cli][corpus]") {
+    if (!std::filesystem::exists(kumite::test::mocap_root() / "bandai-namco-1")) return;
+    const std::string db = baked_golden().string();
+    const auto one = run_command(kumite_exe() + " query " + db + " --character giant --target 0.1,1.4,0.7 --command kick --side left --json");
+    INFO(one.err);
+    REQUIRE(one.status == 0);
+    const nlohmann::json result = nlohmann::json::parse(one.out);
+    for (const char* key : {"clip", "clip_index", "semantics", "side", "segment", "start_frame", "contact_frame", "time_to_contact_s",
+                            "d_pose", "d_target", "score", "latency_us"}) {
+        CHECK(result.contains(key));
+    }
+    CHECK(result["semantics"] == "kick");
+    CHECK(result["side"] == "left");
+    CHECK(result["segment"] == "foot_l");
+    CHECK(result["contact_frame"].get<int>() >= result["start_frame"].get<int>());
+
+    const std::filesystem::path targets = write_text("targets.csv", "# x,y,z\n0,1.2,0.6\n\n0.2, 1.0, 0.5\r\n-0.1,1.5,0.8\n");
+    const auto many = run_command(kumite_exe() + " query " + db + " --character kid --targets " + targets.string() + " --command punch --json");
+    REQUIRE(many.status == 0);
+    const nlohmann::json list = nlohmann::json::parse(many.out);
+    REQUIRE(list["results"].size() == 3);
+    CHECK(list.contains("total_us"));
+    const auto exhaustive = run_command(kumite_exe() + " query " + db + " --character kid --targets " + targets.string() +
+                                        " --command punch --exhaustive --json");
+    REQUIRE(exhaustive.status == 0);
+    const nlohmann::json reference = nlohmann::json::parse(exhaustive.out);
+    for (int i = 0; i < 3; ++i) CHECK(reference["results"][i]["score"] == list["results"][i]["score"]);
+    const auto text = run_command(kumite_exe() + " query " + db + " --character kid --target 0,1.2,0.6 --command punch");
+    CHECK(text.status == 0);
+    CHECK_THAT(text.out, Catch::Contains("punch"));
+}
+
+TEST_CASE("cli: query refuses what it cannot answer, saying why", "[cli][corpus]") {
+    if (!std::filesystem::exists(kumite::test::mocap_root() / "bandai-namco-1")) return;
+    const std::string db = baked_golden().string();
+    const std::string base = kumite_exe() + " query " + db + " --character kid ";
+    CHECK(run_command(base + "--command punch").status == 2);                                         // no target
+    CHECK(run_command(base + "--target 0,1,1 --targets x.csv --command punch").status == 2);          // both
+    CHECK(run_command(base + "--target 0,1 --command punch").status == 2);                            // two numbers
+    CHECK(run_command(base + "--target 0,nan,1 --command punch").status == 2);
+    CHECK(run_command(base + "--target 0,1,1 --command punch --side up").status == 2);
+    CHECK(run_command(kumite_exe() + " query " + db + " --character nobody --target 0,1,1 --command punch").status == 2);
+    const auto unknown = run_command(base + "--target 0,1,1 --command headbutt");
+    CHECK(unknown.status == 1);
+    CHECK_THAT(unknown.err, Catch::Contains("no 'headbutt' strikes") && Catch::Contains("punch"));
+    const auto no_right_punch = run_command(base + "--target 0,1,1 --command punch --side right"); // the golden file has none
+    CHECK(no_right_punch.status == 1);
+    const std::filesystem::path bad = write_text("bad.csv", "0,1,1\n0,x,1\n");
+    const auto bad_line = run_command(base + "--targets " + bad.string() + " --command punch");
+    CHECK(bad_line.status == 1);
+    CHECK_THAT(bad_line.err, Catch::Contains("bad.csv:2"));
+    const std::filesystem::path corrupt = write_text("corrupt.kdb", "KUMITEDB but not really");
+    CHECK(run_command(kumite_exe() + " query " + corrupt.string() + " --character kid --target 0,1,1 --command punch").status == 1);
+}

@@ -44,6 +44,9 @@ struct RetrievalSettings {
     double pose_weight = 1.0;
     double target_weight = 1.0;
     int min_lead_frames = 3; // a start at least this many frames before the hit (0.1 s at 30 fps)
+    // Orders with at most this many candidate starts are scanned with the box bound alone: below it, computing
+    // every centroid distance costs more than it saves (measured with tests/bench/retrieval_bench.cpp).
+    int scan_below = 600;
     RetrievalScaling scaling = RetrievalScaling::leg_length;
 };
 
@@ -132,11 +135,12 @@ private:
 
     bool obeys(const ClipInfo& clip, const RetrievalQuery& query) const;
     double scale_to_character(const ClipInfo& clip, const CharacterSize& character) const;
-    double box_distance(const DbPose& pose, const Eigen::Vector3d& target_in_start) const;
     // Scores one start exactly; returns false when its score cannot beat `best` (left untouched then).
     bool score_start(int pose_index, const RetrievalQuery& query, double d_pose, RetrievalResult& best) const;
-    void visit_group(int group, double centroid_distance, const RetrievalQuery& query, const Eigen::Vector3d& target_in_heading,
+    // centroid_distance < 0: no pose bound (the scan of small orders).
+    void visit_group(int group, bool arm, double centroid_distance, const RetrievalQuery& query, const Eigen::Vector3d& target_in_heading,
                      RetrievalResult& best) const;
+    int candidate_count(int semantics, Side side) const; // over every cluster and limb
     void finish(RetrievalResult& result, const RetrievalQuery& query) const;
 
     MotionDatabaseView m_db;
@@ -145,9 +149,18 @@ private:
     std::vector<ClipInfo> m_clips;
     std::vector<PoseInfo> m_poses;
     std::vector<float> m_cluster_radius;     // sqrt(radius / points)
-    std::vector<std::uint32_t> m_candidates; // pose indices grouped by cluster, then order key
+    // A candidate start as the search's inner loop reads it: contiguous per group, its hit-path box divided by
+    // its actor's scale length, its distance to its centroid.
+    struct Candidate {
+        float box_min[3];
+        float box_max[3];
+        float distance_to_centroid;
+        std::uint32_t pose;
+    };
+    std::vector<Candidate> m_candidates; // grouped by cluster, then order key
     std::vector<std::uint32_t> m_group_begin; // [group], one more entry at the end
     std::vector<AlignedBox> m_group_boxes;   // [group] in scale lengths
+    std::vector<int> m_order_counts;         // [order key] candidates over every cluster
     int m_order_keys = 0;
 };
 
