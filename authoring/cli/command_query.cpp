@@ -3,10 +3,8 @@
 #include "capture_loading.h"
 #include "character_catalog.h"
 #include "commands.h"
+#include "fighter_setup.h"
 
-#include "kumite/core/character_rig.h"
-#include "kumite/core/retrieval.h"
-#include "kumite/formats/motion_database_file.h"
 
 #include <chrono>
 #include <cstdio>
@@ -36,15 +34,6 @@ const CommandSpec& query_spec() {
 
 namespace {
 
-Result<Eigen::Vector3d> parse_point(const std::string& text, const std::string& where) {
-    Eigen::Vector3d point;
-    char extra = 0;
-    if (std::sscanf(text.c_str(), " %lf , %lf , %lf %c", &point.x(), &point.y(), &point.z(), &extra) != 3 || !point.allFinite()) {
-        return make_error(ErrorCode::invalid, where + ": expected X,Y,Z in metres, not '" + text + "'");
-    }
-    return point;
-}
-
 Result<std::vector<Eigen::Vector3d>> read_targets(const std::string& path) {
     std::ifstream in(path);
     if (!in) return make_error(ErrorCode::io, path + ": cannot read the targets file");
@@ -60,8 +49,6 @@ Result<std::vector<Eigen::Vector3d>> read_targets(const std::string& path) {
     if (targets.empty()) return make_error(ErrorCode::invalid, path + ": no targets");
     return targets;
 }
-
-const char* side_name(Side side) { return side == Side::left ? "left" : side == Side::right ? "right" : "none"; }
 
 nlohmann::json result_json(const Retriever& retriever, const RetrievalResult& result, double latency_us) {
     const MotionDatabaseView& db = retriever.database();
@@ -93,22 +80,8 @@ nlohmann::json result_json(const Retriever& retriever, const RetrievalResult& re
 int run_query(int argc, char** argv) {
     Arguments arguments;
     if (std::optional<int> status = parse_command_line(query_spec(), argc, argv, arguments)) return *status;
-    const std::optional<std::string> character_name = arguments.value("character");
-    const std::optional<std::string> command = arguments.value("command");
-    if (!character_name) return usage_error(query_spec(), "--character NAME is required");
-    if (!command) return usage_error(query_spec(), "--command SEMANTICS is required (punch, kick, ...)");
     if (arguments.value("target").has_value() == arguments.value("targets").has_value()) {
         return usage_error(query_spec(), "give exactly one of --target X,Y,Z and --targets FILE.csv");
-    }
-    Side side = Side::none;
-    if (const std::optional<std::string> name = arguments.value("side"); name && *name != "any") {
-        if (*name != "left" && *name != "right") return usage_error(query_spec(), "--side must be left, right or any, not '" + *name + "'");
-        side = *name == "left" ? Side::left : Side::right;
-    }
-    RetrievalSettings settings;
-    if (const std::optional<std::string> scaling = arguments.value("scaling")) {
-        if (*scaling != "leg" && *scaling != "limb") return usage_error(query_spec(), "--scaling must be leg or limb");
-        settings.scaling = *scaling == "leg" ? RetrievalScaling::leg_length : RetrievalScaling::limb_length;
     }
     std::vector<Eigen::Vector3d> targets;
     if (const std::optional<std::string> text = arguments.value("target")) {
@@ -121,35 +94,10 @@ int run_query(int argc, char** argv) {
         targets = std::move(*read);
     }
 
-    Result<MotionDatabase> database = MotionDatabase::open(arguments.positionals[0]);
-    if (!database) return input_error(database.error().message);
-    const std::optional<std::string> folder = arguments.value("characters-dir");
-    Result<BvhFile> character = load_character(folder ? std::filesystem::path(*folder) : default_characters_dir(), *character_name);
-    if (!character) return usage_error(query_spec(), character.error().message);
-    Result<RestAnatomy> anatomy = rest_anatomy_build(character->clip, character->body_map);
-    if (!anatomy) return input_error("character " + *character_name + ": " + anatomy.error().message);
-
-    const Retriever retriever(database->view(), settings);
-    const int semantics = retriever.semantics_id(*command);
-    if (semantics < 0 || *command == "rest" || command->starts_with("step_")) {
-        std::string known;
-        for (const DbClip& clip : database->view().clips) {
-            const std::string name(database->view().string(clip.semantics));
-            if (db_clip_is_strike(clip) && known.find(name) == std::string::npos) known += (known.empty() ? "" : ", ") + name;
-        }
-        return input_error(arguments.positionals[0] + ": no '" + *command + "' strikes in this database (it has: " + known + ")");
-    }
-    CharacterRig rig(character->clip.skeleton, *anatomy);
-    Pose pose;
-    rig.stand_at_origin(pose, database->view());
-    std::array<float, k_feature_dimensions> feature;
-    rig.still_feature(feature);
-    RetrievalQuery query;
-    query.pose_feature = feature;
-    query.heading = rig.heading();
-    query.semantics = semantics;
-    query.side = side;
-    query.character = rig.size();
+    FighterSetup setup;
+    if (std::optional<int> status = fighter_setup(setup, query_spec(), arguments)) return *status;
+    const Retriever& retriever = *setup.retriever;
+    RetrievalQuery query = setup.query;
     RetrievalWorkspace workspace = retriever.make_workspace();
     const bool exhaustive = arguments.has("exhaustive");
 
@@ -161,8 +109,8 @@ int run_query(int argc, char** argv) {
         const RetrievalResult result = exhaustive ? retriever.query_exhaustive(query) : retriever.query(query, workspace);
         const double latency_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started).count();
         if (!result.found) {
-            return input_error(arguments.positionals[0] + ": no " + *command + " with side " + side_name(side) +
-                               " has a start far enough before its hit");
+            return input_error(arguments.positionals[0] + ": no " + *arguments.value("command") + " with side " +
+                               side_name(query.side) + " has a start far enough before its hit");
         }
         results.push_back(result_json(retriever, result, latency_us));
     }

@@ -38,4 +38,7 @@ int run_db_info(int argc, char** argv);
 const CommandSpec& query_spec();
 int run_query(int argc, char** argv);
 
+const CommandSpec& adapt_spec();
+int run_adapt(int argc, char** argv);
+
 } // namespace kumite::cli

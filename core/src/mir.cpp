@@ -185,9 +185,10 @@ void MirDecoder::solve_limb(int limb, const MirFrame& frame, const LimbPins& pin
     const LimbChain& chain = m_anatomy.limbs[limb];
     const auto parts = limb_parts(static_cast<Limb>(limb));
     const Eigen::Vector3d& root = m_positions[chain.root];
-    Eigen::Vector3d target = pins.pinned[limb]
-                                 ? pins.extremity_world[limb]
-                                 : Eigen::Vector3d(root + frame.part_frames[chain.parent_part] * frame.extremity[limb] * chain.length());
+    Eigen::Vector3d target = pins.pinned[limb] ? pins.extremity_world[limb]
+                                               : Eigen::Vector3d(root + frame.part_frames[chain.parent_part] * frame.extremity[limb] * chain.length() +
+                                                                 pins.extremity_offset_world[limb]);
+    m_limb_targets[limb] = target;
     // An ankle kept at least half its standing height above the floor leaves room to pitch the foot onto it.
     if (limb >= 2) target.y() = std::max(target.y(), 0.5 * m_anatomy.ankle_height);
     const TwoBoneSolution solution = two_bone_ik(root, target, chain.upper_length, chain.lower_length, frame.swivel[limb],

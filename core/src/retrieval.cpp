@@ -53,6 +53,10 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
         info.actor_leg_length = actor.leg_length_m;
         const bool by_arm = m_settings.scaling == RetrievalScaling::limb_length && info.arm_strike;
         info.actor_scale_length = by_arm ? actor.arm_length_m : actor.leg_length_m;
+        if (db_clip_is_strike(clip) && !info.arm_strike) {
+            const bool left_leg = body_part_name(static_cast<BodyPart>(clip.segment)).ends_with("_l");
+            info.support_foot = left_leg ? db_pose_right_foot_planted : db_pose_left_foot_planted;
+        }
     }
 
     m_poses.resize(m_db.poses.size());
@@ -91,6 +95,7 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
                 }
                 candidate.distance_to_centroid = m_poses[pose].distance_to_centroid;
                 candidate.pose = pose;
+                candidate.support_foot = clip.support_foot;
                 m_candidates.push_back(candidate);
                 m_group_boxes[group].extend(Eigen::Vector3d(candidate.box_min[0], candidate.box_min[1], candidate.box_min[2]));
                 m_group_boxes[group].extend(Eigen::Vector3d(candidate.box_max[0], candidate.box_max[1], candidate.box_max[2]));
@@ -200,6 +205,7 @@ void Retriever::visit_group(int group, bool arm, double centroid_distance, const
     const double pose_weight = m_settings.pose_weight;
     for (std::uint32_t k = m_group_begin[group]; k < m_group_begin[group + 1]; ++k) {
         const Candidate& candidate = m_candidates[k];
+        if (candidate.support_foot && !support_planted(candidate.support_foot, m_db.poses[candidate.pose].flags, query)) continue;
         ++best.counts.candidates_seen;
         const double pose_part =
             centroid_distance < 0.0 ? 0.0 : pose_weight * std::max(0.0, std::abs(centroid_distance - candidate.distance_to_centroid) - k_rounding_slack);
@@ -276,6 +282,7 @@ RetrievalResult Retriever::query_exhaustive(const RetrievalQuery& query) const {
     for (const ClipInfo& clip : m_clips) {
         if (!obeys(clip, query)) continue;
         for (int pose = clip.first_start; pose < clip.end_start; ++pose) {
+            if (clip.support_foot && !support_planted(clip.support_foot, m_db.poses[pose].flags, query)) continue;
             ++best.counts.candidates_seen;
             ++best.counts.pose_scored;
             ++best.counts.target_scored;

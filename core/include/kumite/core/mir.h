@@ -42,9 +42,13 @@ struct MirFrame {
 
 // World positions that override a limb's encoded extremity (foot locking), and a shift of the hip centre that
 // lets pinned legs keep their encoded extension.
+// A limb that is not pinned may instead have its encoded extremity moved by a world offset (the adaptation's
+// d(t): the hit point driven towards the target).
 struct LimbPins {
     std::array<bool, k_limb_count> pinned{};
     std::array<Eigen::Vector3d, k_limb_count> extremity_world;
+    std::array<Eigen::Vector3d, k_limb_count> extremity_offset_world{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                                                                     Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
     Eigen::Vector3d hip_shift_world = Eigen::Vector3d::Zero(); // metres
 };
 
@@ -76,6 +80,9 @@ public:
 
     // Model transforms of the last decoded pose.
     std::span<const Eigen::Vector3d> model_positions() const { return m_positions; }
+    // Where each limb's extremity was asked to go in the last decode (pinned, or encoded plus offset), before the
+    // limb's reach and the floor clamped it.
+    std::span<const Eigen::Vector3d> limb_targets() const { return m_limb_targets; }
     std::span<const Eigen::Quaterniond> model_rotations() const { return m_rotations; }
 
 private:
@@ -96,6 +103,7 @@ private:
     std::vector<bool> m_solved;              // [joint] rotation set by a limb solve
     std::array<std::vector<int>, 2> m_foot_joints;     // [foot] the ankle and the joints below it
     std::array<std::vector<int>, 2> m_foot_end_sites;  // [foot] End Sites below the ankle
+    std::array<Eigen::Vector3d, k_limb_count> m_limb_targets;
 };
 
 // The MIR of the mirrored pose (see clip_mirror.h): parts and limbs trade sides, world quantities are reflected,

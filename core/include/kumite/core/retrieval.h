@@ -63,6 +63,10 @@ struct RetrievalQuery {
     int semantics = -1;                  // Retriever::semantics_id
     Side side = Side::none;              // none: either side
     CharacterSize character;
+    // The current motion's planted feet (DbPoseFlags). Support-foot rule: a leg strike is a candidate only when
+    // its support foot (the other one) is planted both now and in the clip's start pose, so a kick never starts
+    // while its kicking leg carries the weight.
+    std::uint32_t planted_feet = db_pose_left_foot_planted | db_pose_right_foot_planted;
 };
 
 struct RetrievalCounts {
@@ -122,6 +126,7 @@ private:
         int end_start = 0;
         double actor_leg_length = 1.0;
         double actor_scale_length = 1.0; // the actor length that scaling divides by (leg, or the striking limb)
+        std::uint32_t support_foot = 0;  // DbPoseFlags bit of a leg strike's support foot, 0 for arm strikes
     };
     struct PoseInfo {
         float distance_to_centroid = 0.0f; // sqrt(Kovar / points), leg lengths
@@ -134,6 +139,9 @@ private:
     double character_scale_length(bool arm, const CharacterSize& character) const;
 
     bool obeys(const ClipInfo& clip, const RetrievalQuery& query) const;
+    static bool support_planted(std::uint32_t support_foot, std::uint32_t start_flags, const RetrievalQuery& query) {
+        return (support_foot & start_flags & query.planted_feet) == support_foot;
+    }
     double scale_to_character(const ClipInfo& clip, const CharacterSize& character) const;
     // Scores one start exactly; returns false when its score cannot beat `best` (left untouched then).
     bool score_start(int pose_index, const RetrievalQuery& query, double d_pose, RetrievalResult& best) const;
@@ -156,6 +164,7 @@ private:
         float box_max[3];
         float distance_to_centroid;
         std::uint32_t pose;
+        std::uint32_t support_foot; // DbPoseFlags bit a leg strike needs planted, 0 for arm strikes
     };
     std::vector<Candidate> m_candidates; // grouped by cluster, then order key
     std::vector<std::uint32_t> m_group_begin; // [group], one more entry at the end

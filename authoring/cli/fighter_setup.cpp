@@ -1,0 +1,71 @@
+#include "fighter_setup.h"
+
+#include "capture_loading.h"
+#include "character_catalog.h"
+
+#include <cstdio>
+
+namespace kumite::cli {
+
+Result<Eigen::Vector3d> parse_point(const std::string& text, const std::string& where) {
+    Eigen::Vector3d point;
+    char extra = 0;
+    if (std::sscanf(text.c_str(), " %lf , %lf , %lf %c", &point.x(), &point.y(), &point.z(), &extra) != 3 || !point.allFinite()) {
+        return make_error(ErrorCode::invalid, where + ": expected X,Y,Z in metres, not '" + text + "'");
+    }
+    return point;
+}
+
+const char* side_name(Side side) { return side == Side::left ? "left" : side == Side::right ? "right" : "none"; }
+
+std::optional<int> fighter_setup(FighterSetup& setup, const CommandSpec& spec, const Arguments& arguments) {
+    const std::optional<std::string> character_name = arguments.value("character");
+    const std::optional<std::string> command = arguments.value("command");
+    if (!character_name) return usage_error(spec, "--character NAME is required");
+    if (!command) return usage_error(spec, "--command SEMANTICS is required (punch, kick, ...)");
+    Side side = Side::none;
+    if (const std::optional<std::string> name = arguments.value("side"); name && *name != "any") {
+        if (*name != "left" && *name != "right") return usage_error(spec, "--side must be left, right or any, not '" + *name + "'");
+        side = *name == "left" ? Side::left : Side::right;
+    }
+    RetrievalSettings settings;
+    if (const std::optional<std::string> scaling = arguments.value("scaling")) {
+        if (*scaling != "leg" && *scaling != "limb") return usage_error(spec, "--scaling must be leg or limb");
+        settings.scaling = *scaling == "leg" ? RetrievalScaling::leg_length : RetrievalScaling::limb_length;
+    }
+    const std::optional<std::string> folder = arguments.value("characters-dir");
+    Result<BvhFile> character = load_character(folder ? std::filesystem::path(*folder) : default_characters_dir(), *character_name);
+    if (!character) return usage_error(spec, character.error().message);
+    setup.character = std::move(*character);
+
+    const std::string& path = arguments.positionals[0];
+    Result<MotionDatabase> database = MotionDatabase::open(path);
+    if (!database) return input_error(database.error().message);
+    setup.database = std::move(*database);
+    Result<RestAnatomy> anatomy = rest_anatomy_build(setup.character.clip, setup.character.body_map);
+    if (!anatomy) return input_error("character " + *character_name + ": " + anatomy.error().message);
+    setup.anatomy = std::move(*anatomy);
+
+    const MotionDatabaseView& db = setup.database.view();
+    setup.retriever = std::make_unique<Retriever>(db, settings);
+    const int semantics = setup.retriever->semantics_id(*command);
+    if (semantics < 0 || *command == "rest" || command->starts_with("step_")) {
+        std::string known;
+        for (const DbClip& clip : db.clips) {
+            const std::string name(db.string(clip.semantics));
+            if (db_clip_is_strike(clip) && known.find(name) == std::string::npos) known += (known.empty() ? "" : ", ") + name;
+        }
+        return input_error(path + ": no '" + *command + "' strikes in this database (it has: " + known + ")");
+    }
+    setup.rig = std::make_unique<CharacterRig>(setup.character.clip.skeleton, setup.anatomy);
+    setup.rig->stand_at_origin(setup.standing, db);
+    setup.rig->still_feature(setup.feature);
+    setup.query.pose_feature = setup.feature;
+    setup.query.heading = setup.rig->heading();
+    setup.query.semantics = semantics;
+    setup.query.side = side;
+    setup.query.character = setup.rig->size();
+    return std::nullopt;
+}
+
+} // namespace kumite::cli

@@ -1,0 +1,36 @@
+#pragma once
+// What `kumite query` and `kumite adapt` share: the database, a character standing at the origin in the guard,
+// its retriever, and the order (--command, --side) read from the command line.
+
+#include "arguments.h"
+
+#include "kumite/core/character_rig.h"
+#include "kumite/core/retrieval.h"
+#include "kumite/formats/bvh_reader.h"
+#include "kumite/formats/motion_database_file.h"
+
+#include <memory>
+
+namespace kumite::cli {
+
+struct FighterSetup {
+    MotionDatabase database;
+    BvhFile character;
+    RestAnatomy anatomy;
+    std::unique_ptr<CharacterRig> rig;
+    std::unique_ptr<Retriever> retriever;
+    Pose standing;                                   // the guard at the origin, facing +Z
+    std::array<float, k_feature_dimensions> feature{};
+    RetrievalQuery query;                            // everything but the target
+};
+
+// Reads DB (positional 0), --character, --command, --side, --scaling. Returns the exit status on failure
+// (after printing why): 2 for usage errors, 1 for bad input.
+std::optional<int> fighter_setup(FighterSetup& setup, const CommandSpec& spec, const Arguments& arguments);
+
+// Parses "X,Y,Z" (metres, finite); `where` names it in the error.
+Result<Eigen::Vector3d> parse_point(const std::string& text, const std::string& where);
+
+const char* side_name(Side side);
+
+} // namespace kumite::cli

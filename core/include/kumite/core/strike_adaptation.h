@@ -1,0 +1,113 @@
+#pragma once
+// Adaptation (ARCHITECTURE.md step 6): a retrieved strike played on a character, frame by frame, so that its hit
+// segment meets the latched target at the contact frame, with planted feet.
+//
+// Per frame i (clip frame start + i, at the database's frame rate):
+//  1. the clip's MIR frame, moved by the retrieval's alignment, blended from the MIR frame the character was in
+//     when the strike began (smoothstep weight over `blend_frames`: a ramp, C1 at both ends);
+//  2. the constraint ramp: the hit point is driven to p(t) + d(t), with d(t) = ramp(t) * d(tc), d(tc) the offset
+//     between where the hit point would be at the contact frame and the target (constraint_ramp below);
+//  3. the limb alone: the decoder's analytic two-bone solve of that limb, swivel kept;
+//  4. when the limb cannot reach, Cyclic Coordinate Descent over trunk pivots (clavicle, chest, spine base for
+//     arm strikes; the pelvis about the support hip for leg strikes), each within its joint limit (settings),
+//     until 1 mm or the iteration budget; the limb is then solved again onto the closest point it reaches. Every
+//     frame starts from the clip's own frame, so the result is a smooth function of the target: no jitter.
+//  5. the support feet — planted both in the current motion and in the clip's start — stay pinned where they
+//     were when the strike began, for the whole strike; a kick's kicking foot is free. When the clip's hips rise
+//     beyond what a pinned leg reaches, the hips are lowered towards the foot instead of lifting it.
+// Everything is sized by the first begin(); after it, begin() and step() do not allocate.
+
+#include "kumite/core/character_rig.h"
+#include "kumite/core/mir_edit.h"
+
+namespace kumite {
+
+// 0 before t0; rises with a smoothstep (C1: zero slope at both ends) to 1 at tc; falls the same way back to 0 over
+// `recovery` after tc; 0 after. Times in frames (any unit).
+double constraint_ramp(double t, double t0, double tc, double recovery);
+
+struct AdaptationSettings {
+    int blend_frames = 6;            // blend-in from the current motion (0.2 s at 30 fps)
+    int recovery_frames = 8;         // d(t) back to 0 after the contact
+    double reach_tolerance_m = 0.001;
+    int ccd_iterations = 4;          // sweeps over the pivots
+    // Joint limits of the CCD, as the largest turn away from the clip's own pose (radians): 25 deg for the spine
+    // base, 15 deg for the chest, 15 deg for a clavicle, 20 deg for the pelvis (leaning back from a kick).
+    double spine_base_limit_rad = 25.0 * 3.14159265358979 / 180.0;
+    double chest_limit_rad = 15.0 * 3.14159265358979 / 180.0;
+    double clavicle_limit_rad = 15.0 * 3.14159265358979 / 180.0;
+    double pelvis_limit_rad = 20.0 * 3.14159265358979 / 180.0;
+};
+
+struct StrikePlan {
+    int clip = -1;
+    int start_frame = 0;
+    int contact_frame = 0;
+    FloorAlignment clip_to_world; // from the retrieval
+    Eigen::Vector3d target_world = Eigen::Vector3d::Zero();
+};
+
+enum class Reach { limb, torso, unreachable };
+
+struct AdaptedFrame {
+    Eigen::Vector3d effector = Eigen::Vector3d::Zero(); // the hit joint, world
+    Eigen::Vector3d wanted = Eigen::Vector3d::Zero();   // p(t) + d(t)
+    double ramp = 0.0;
+    Reach reach = Reach::limb;
+    int ccd_decodes = 0;
+    bool contact = false;                               // the contact frame
+};
+
+class StrikeAdapter {
+public:
+    StrikeAdapter(const CharacterRig& rig, const MotionDatabaseView& database, AdaptationSettings settings = {});
+
+    // Starts a strike from the character's current MIR frame and feet ([left, right]: planted or not, and the
+    // ankles' world positions). Decodes the contact frame once to find d(tc).
+    void begin(const StrikePlan& plan, const MirFrame& current, const std::array<bool, 2>& planted,
+               const std::array<Eigen::Vector3d, 2>& ankles_world);
+    const StrikePlan& plan() const { return m_plan; }
+    bool arm_strike() const { return m_arm; }
+
+    int frame_count() const { return m_frame_count; }   // start .. the clip's last frame
+    int contact_index() const { return m_plan.contact_frame - m_plan.start_frame; }
+    int effector_joint() const { return m_effector_joint; }
+    const std::array<bool, 2>& support_feet() const { return m_support; }
+    const std::array<Eigen::Vector3d, 2>& support_pins() const { return m_support_pins; }
+
+    // Frame `index` (0 = the start frame) into `out`; model transforms of it in positions() / rotations().
+    AdaptedFrame step(int index, Pose& out);
+    std::span<const Eigen::Vector3d> positions() const { return m_decoder.model_positions(); }
+    std::span<const Eigen::Quaterniond> rotations() const { return m_decoder.model_rotations(); }
+
+private:
+    void frame_mir(int index, MirFrame& out); // step 1: the clip's frame, aligned, blended
+    // Decodes; when a pinned support foot is out of its leg's reach, moves the hips towards it just enough and
+    // decodes again (so the foot stays down rather than being dragged up). Returns the decodes made.
+    int decode(Pose& out, const MirFrame& frame, LimbPins& pins);
+    Eigen::Vector3d pivot_point(TrunkPivot pivot) const;
+    double pivot_limit(TrunkPivot pivot) const;
+
+    const CharacterRig& m_rig;
+    MotionDatabaseView m_db;
+    AdaptationSettings m_settings;
+    MirDecoder m_decoder;
+    StrikePlan m_plan;
+    MirFrame m_current;      // where the character was when the strike began
+    MirFrame m_clip_frame;   // scratch
+    MirFrame m_frame;        // scratch: the frame being decoded
+    Pose m_scratch_pose;
+    int m_frame_count = 0;
+    int m_limb = 0;          // the striking limb (Limb)
+    int m_effector_joint = -1;
+    bool m_arm = true;
+    std::array<bool, 2> m_support{};
+    std::array<Eigen::Vector3d, 2> m_support_pins;
+    LimbPins m_pins;
+    Eigen::Vector3d m_offset_at_contact = Eigen::Vector3d::Zero(); // d(tc)
+    std::array<TrunkPivot, 3> m_pivots{};
+    int m_pivot_count = 0;
+    std::array<Eigen::Quaterniond, 3> m_pivot_turns;
+};
+
+} // namespace kumite

@@ -1,0 +1,96 @@
+#include "kumite/core/mir_edit.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace kumite {
+namespace {
+
+Eigen::Quaterniond chain_sample(const MirChainFrames& chain, double fraction) {
+    if (chain.count == 0) return Eigen::Quaterniond::Identity();
+    if (fraction <= chain.fractions[0]) return chain.frames[0];
+    for (int k = 1; k < chain.count; ++k) {
+        if (fraction <= chain.fractions[k]) {
+            const double span = chain.fractions[k] - chain.fractions[k - 1];
+            return chain.frames[k - 1].slerp(span > 1e-12 ? (fraction - chain.fractions[k - 1]) / span : 1.0, chain.frames[k]);
+        }
+    }
+    return chain.frames[chain.count - 1];
+}
+
+void turn_parts(MirFrame& frame, const Eigen::Quaterniond& rotation, std::initializer_list<BodyPart> parts) {
+    for (BodyPart part : parts) frame.part_frames[static_cast<int>(part)] = rotation * frame.part_frames[static_cast<int>(part)];
+}
+
+void turn_arm(MirFrame& frame, const Eigen::Quaterniond& rotation, bool left) {
+    if (left) turn_parts(frame, rotation, {BodyPart::clavicle_l, BodyPart::upper_arm_l, BodyPart::forearm_l, BodyPart::hand_l});
+    else turn_parts(frame, rotation, {BodyPart::clavicle_r, BodyPart::upper_arm_r, BodyPart::forearm_r, BodyPart::hand_r});
+}
+
+void turn_above_chest(MirFrame& frame, const Eigen::Quaterniond& rotation) {
+    turn_parts(frame, rotation, {BodyPart::chest, BodyPart::neck, BodyPart::head});
+    for (int k = 0; k < frame.neck.count; ++k) frame.neck.frames[k] = rotation * frame.neck.frames[k];
+    if (frame.spine.count > 0) frame.spine.frames[frame.spine.count - 1] = rotation * frame.spine.frames[frame.spine.count - 1];
+    turn_arm(frame, rotation, true);
+    turn_arm(frame, rotation, false);
+}
+
+} // namespace
+
+void mir_frame_move_on_floor(MirFrame& frame, const FloorAlignment& motion, double leg_length) {
+    const Eigen::Quaterniond turn(Eigen::AngleAxisd(motion.angle_rad, Eigen::Vector3d::UnitY()));
+    const FloorAlignment normalised{motion.angle_rad, motion.x / leg_length, motion.z / leg_length};
+    const Eigen::Vector3d moved = normalised.apply(Eigen::Vector3d(frame.hip_centre.x(), 0.0, frame.hip_centre.z()));
+    frame.hip_centre.x() = moved.x();
+    frame.hip_centre.z() = moved.z();
+    for (Eigen::Quaterniond& part : frame.part_frames) part = turn * part;
+    for (int k = 0; k < frame.spine.count; ++k) frame.spine.frames[k] = turn * frame.spine.frames[k];
+    for (int k = 0; k < frame.neck.count; ++k) frame.neck.frames[k] = turn * frame.neck.frames[k];
+}
+
+void mir_frame_blend(MirFrame& out, const MirFrame& a, const MirFrame& b, double w) {
+    out.hip_centre = (1.0 - w) * a.hip_centre + w * b.hip_centre;
+    for (int part = 0; part < k_body_part_count; ++part) {
+        out.has_part[part] = b.has_part[part];
+        out.part_frames[part] = a.part_frames[part].slerp(w, b.part_frames[part]);
+    }
+    for (auto [to, from_a, from_b] : {std::tuple{&out.spine, &a.spine, &b.spine}, std::tuple{&out.neck, &a.neck, &b.neck}}) {
+        to->count = from_b->count;
+        for (int k = 0; k < from_b->count; ++k) {
+            to->fractions[k] = from_b->fractions[k];
+            to->frames[k] = chain_sample(*from_a, from_b->fractions[k]).slerp(w, from_b->frames[k]);
+        }
+    }
+    for (int limb = 0; limb < k_limb_count; ++limb) {
+        out.extremity[limb] = (1.0 - w) * a.extremity[limb] + w * b.extremity[limb];
+        const double turn = std::remainder(b.swivel[limb] - a.swivel[limb], 2.0 * std::numbers::pi); // the short way round
+        out.swivel[limb] = a.swivel[limb] + w * turn;
+    }
+    out.source_local_rotations.clear();
+}
+
+void mir_frame_turn(MirFrame& frame, TrunkPivot pivot, const Eigen::Quaterniond& rotation, const Eigen::Vector3d& pivot_point,
+                    double leg_length, double ankle_height) {
+    switch (pivot) {
+    case TrunkPivot::clavicle_l: turn_arm(frame, rotation, true); break;
+    case TrunkPivot::clavicle_r: turn_arm(frame, rotation, false); break;
+    case TrunkPivot::chest: turn_above_chest(frame, rotation); break;
+    case TrunkPivot::spine_base:
+        for (int k = 1; k + 1 < frame.spine.count; ++k) frame.spine.frames[k] = rotation * frame.spine.frames[k];
+        turn_parts(frame, rotation, {BodyPart::spine});
+        turn_above_chest(frame, rotation);
+        break;
+    case TrunkPivot::pelvis: {
+        const Eigen::Vector3d hip(frame.hip_centre.x() * leg_length, ankle_height + frame.hip_centre.y() * leg_length,
+                                  frame.hip_centre.z() * leg_length);
+        const Eigen::Vector3d moved = pivot_point + rotation * (hip - pivot_point);
+        frame.hip_centre = Eigen::Vector3d(moved.x() / leg_length, (moved.y() - ankle_height) / leg_length, moved.z() / leg_length);
+        for (Eigen::Quaterniond& part : frame.part_frames) part = rotation * part;
+        for (int k = 0; k < frame.spine.count; ++k) frame.spine.frames[k] = rotation * frame.spine.frames[k];
+        for (int k = 0; k < frame.neck.count; ++k) frame.neck.frames[k] = rotation * frame.neck.frames[k];
+        break;
+    }
+    }
+}
+
+} // namespace kumite
