@@ -154,14 +154,18 @@ AdaptedFrame StrikeAdapter::step(int index, Pose& out) {
     for (int sweep = 0; sweep < m_settings.ccd_iterations; ++sweep) {
         for (int p = 0; p < m_pivot_count; ++p) {
             const TrunkPivot pivot = m_pivots[p];
+            // Out of reach the limb points straight at the target from its root, so what the trunk must do is
+            // bring the root closer: turn the pivot so that the root swings towards the target.
             const Eigen::Vector3d centre = pivot_point(pivot);
-            const Eigen::Vector3d from = result.effector - centre, to = result.wanted - centre;
+            const Eigen::Vector3d root = m_decoder.model_positions()[anatomy.limbs[m_limb].root];
+            const Eigen::Vector3d from = root - centre, to = result.wanted - centre;
             if (from.norm() < 1e-6 || to.norm() < 1e-6) continue;
             Eigen::Quaterniond total = Eigen::Quaterniond::FromTwoVectors(from, to) * m_pivot_turns[p];
             const double angle = rotation_angle(total), limit = pivot_limit(pivot);
             if (angle > limit) total = Eigen::Quaterniond::Identity().slerp(limit / angle, total);
             const Eigen::Quaterniond turn = total * m_pivot_turns[p].conjugate();
             m_pivot_turns[p] = total;
+            result.pivot_turn_rad[p] = rotation_angle(total);
             mir_frame_turn(m_frame, pivot, turn, centre, anatomy.leg_length, anatomy.ankle_height);
             result.ccd_decodes += decode(out, m_frame, pins);
             result.effector = m_decoder.model_positions()[m_effector_joint];

@@ -1,0 +1,222 @@
+// Adaptation on the golden database (a right kick and its mirror, a left punch, the guard): the constraint ramp's
+// shape, the three reachability classes, joint limits, no jitter near an unreachable target, planted support
+// feet, exact bone lengths, and the support-foot rule of the retrieval.
+
+#include "kumite/core/strike_adaptation.h"
+#include "kumite/formats/bvh_reader.h"
+#include "kumite/formats/motion_database_file.h"
+#include "support/test_paths.h"
+
+#include <catch2/catch.hpp>
+
+using namespace kumite;
+
+namespace {
+
+struct Scene {
+    MotionDatabase database;
+    BvhFile file;
+    RestAnatomy anatomy;
+    std::unique_ptr<CharacterRig> rig;
+    std::unique_ptr<Retriever> retriever;
+    Pose standing;
+    std::array<float, k_feature_dimensions> feature{};
+    MirFrame current;
+    std::array<Eigen::Vector3d, 2> ankles;
+
+    explicit Scene(const std::string& character) {
+        Result<MotionDatabase> opened = MotionDatabase::open(kumite::test::source_dir() / "data/golden/golden-v1.kdb");
+        REQUIRE(opened.has_value());
+        database = std::move(*opened);
+        Result<BvhFile> read = bvh_read_file(kumite::test::source_dir() / "data/characters" / (character + ".bvh"));
+        REQUIRE(read.has_value());
+        file = std::move(*read);
+        Result<RestAnatomy> built = rest_anatomy_build(file.clip, file.body_map);
+        REQUIRE(built.has_value());
+        anatomy = std::move(*built);
+        rig = std::make_unique<CharacterRig>(file.clip.skeleton, anatomy);
+        retriever = std::make_unique<Retriever>(database.view());
+        rig->stand_at_origin(standing, database.view());
+        rig->still_feature(feature);
+        MirEncoder encoder(file.clip.skeleton, anatomy);
+        encoder.encode(current, standing.view());
+        ankles = {rig->positions()[anatomy.limbs[2].extremity], rig->positions()[anatomy.limbs[3].extremity]};
+    }
+
+    RetrievalQuery query(const char* semantics, Side side, const Eigen::Vector3d& target) const {
+        RetrievalQuery q;
+        q.pose_feature = feature;
+        q.heading = rig->heading();
+        q.character = rig->size();
+        q.semantics = retriever->semantics_id(semantics);
+        q.side = side;
+        q.target_world = target;
+        return q;
+    }
+
+    // Retrieves and begins; returns the plan.
+    StrikePlan begin(StrikeAdapter& adapter, const char* semantics, Side side, const Eigen::Vector3d& target) const {
+        RetrievalWorkspace workspace = retriever->make_workspace();
+        const RetrievalResult result = retriever->query(query(semantics, side, target), workspace);
+        REQUIRE(result.found);
+        const StrikePlan plan{result.clip, result.start_frame, result.contact_frame, result.clip_to_world, target};
+        adapter.begin(plan, current, {true, true}, ankles);
+        return plan;
+    }
+};
+
+double bone_error(const Skeleton& skeleton, std::span<const Eigen::Vector3d> positions) {
+    double worst = 0.0;
+    for (int joint = 1; joint < skeleton.joint_count(); ++joint) {
+        worst = std::max(worst, std::abs((positions[joint] - positions[skeleton.parents[joint]]).norm() - skeleton.rest_offsets[joint].norm()));
+    }
+    return worst;
+}
+
+} // namespace
+
+TEST_CASE("adaptation: the constraint ramp rises and falls smoothly", "[adaptation]") {
+    const double t0 = 2.0, tc = 12.0, recovery = 8.0;
+    CHECK(constraint_ramp(0.0, t0, tc, recovery) == 0.0);
+    CHECK(constraint_ramp(t0, t0, tc, recovery) == 0.0);
+    CHECK(constraint_ramp(tc, t0, tc, recovery) == 1.0);
+    CHECK(constraint_ramp(tc + recovery, t0, tc, recovery) == 0.0);
+    CHECK(constraint_ramp(40.0, t0, tc, recovery) == 0.0);
+    CHECK(constraint_ramp(7.0, t0, tc, recovery) == Approx(0.5));
+    const double h = 1e-4;
+    auto slope = [&](double t) { return (constraint_ramp(t + h, t0, tc, recovery) - constraint_ramp(t - h, t0, tc, recovery)) / (2 * h); };
+    // C1: no kink where the pieces meet.
+    CHECK(std::abs(slope(t0)) < 1e-3);
+    CHECK(std::abs(slope(tc)) < 1e-3);
+    CHECK(std::abs(slope(tc + recovery)) < 1e-3);
+    double previous = 0.0;
+    for (double t = t0; t <= tc; t += 0.25) {
+        const double value = constraint_ramp(t, t0, tc, recovery);
+        CHECK(value >= previous); // monotone rise
+        previous = value;
+    }
+}
+
+TEST_CASE("adaptation: a reachable target is met at the contact frame by the limb alone, with exact bones and planted feet", "[adaptation]") {
+    for (const char* character : {"kid", "scout", "brawler", "runner", "giant"}) {
+        const Scene scene(character);
+        StrikeAdapter adapter(*scene.rig, scene.database.view());
+        // A point between the shoulder and where the punch passes anyway: well inside the arm's reach.
+        RetrievalWorkspace workspace = scene.retriever->make_workspace();
+        const RetrievalResult natural =
+            scene.retriever->query(scene.query("punch", Side::left, Eigen::Vector3d(0.1, 1.0, 0.5)), workspace);
+        REQUIRE(natural.found);
+        const Eigen::Vector3d shoulder = scene.rig->positions()[scene.anatomy.limbs[int(Limb::arm_l)].root];
+        const Eigen::Vector3d target = shoulder + 0.8 * (natural.contact_point_world - shoulder);
+        scene.begin(adapter, "punch", Side::left, target);
+        Pose pose;
+        INFO(character);
+        for (int i = 0; i < adapter.frame_count(); ++i) {
+            const AdaptedFrame frame = adapter.step(i, pose);
+            CHECK(bone_error(scene.file.clip.skeleton, adapter.positions()) < 1e-9);
+            for (int foot = 0; foot < 2; ++foot) {
+                if (adapter.support_feet()[foot]) CHECK((adapter.positions()[scene.anatomy.limbs[2 + foot].extremity] - adapter.support_pins()[foot]).norm() < 1e-6);
+            }
+            if (frame.contact) {
+                CHECK(frame.reach == Reach::limb);
+                CHECK((frame.effector - target).norm() < 1e-6);
+                CHECK(frame.ramp == 1.0);
+            }
+        }
+        CHECK((adapter.support_feet()[0] || adapter.support_feet()[1])); // the feet the clip keeps down are pinned
+    }
+}
+
+TEST_CASE("adaptation: beyond the arm the trunk leans within its limits; far away it stops at the closest point", "[adaptation]") {
+    const Scene scene("brawler");
+    StrikeAdapter adapter(*scene.rig, scene.database.view());
+    const AdaptationSettings limits;
+    const Eigen::Vector3d shoulder = scene.rig->positions()[scene.anatomy.limbs[int(Limb::arm_l)].root];
+    const double arm = scene.anatomy.limbs[int(Limb::arm_l)].length();
+    Pose pose;
+
+    // Past the arm's reach in front of the shoulder: the first distance where the trunk has to lean.
+    AdaptedFrame near;
+    Eigen::Vector3d near_target;
+    for (double extra = 0.0; extra < 0.6 && near.reach != Reach::torso; extra += 0.02) {
+        near_target = shoulder + Eigen::Vector3d(0.0, 0.0, arm + extra);
+        scene.begin(adapter, "punch", Side::left, near_target);
+        near = adapter.step(adapter.contact_index(), pose);
+    }
+    REQUIRE(near.reach == Reach::torso);
+    CHECK((near.effector - near_target).norm() <= 0.001 + 1e-9);
+    CHECK(near.pivot_turn_rad[0] <= limits.clavicle_limit_rad + 1e-9);
+    CHECK(near.pivot_turn_rad[1] <= limits.chest_limit_rad + 1e-9);
+    CHECK(near.pivot_turn_rad[2] <= limits.spine_base_limit_rad + 1e-9);
+
+    // Two metres out: unreachable; every pivot at most at its limit, the arm stretched towards the target.
+    const Eigen::Vector3d far_target = shoulder + Eigen::Vector3d(0.0, 0.0, 2.0);
+    scene.begin(adapter, "punch", Side::left, far_target);
+    const AdaptedFrame far = adapter.step(adapter.contact_index(), pose);
+    CHECK(far.reach == Reach::unreachable);
+    CHECK(far.pivot_turn_rad[0] <= limits.clavicle_limit_rad + 1e-9);
+    CHECK(far.pivot_turn_rad[1] <= limits.chest_limit_rad + 1e-9);
+    CHECK(far.pivot_turn_rad[2] <= limits.spine_base_limit_rad + 1e-9);
+    const Eigen::Vector3d arm_root = adapter.positions()[scene.anatomy.limbs[int(Limb::arm_l)].root];
+    CHECK((far.effector - arm_root).norm() == Approx(arm).epsilon(1e-3)); // fully extended
+    CHECK((far.effector - arm_root).normalized().dot((far_target - arm_root).normalized()) > 0.999); // pointing at it
+    CHECK(bone_error(scene.file.clip.skeleton, adapter.positions()) < 1e-9);
+}
+
+TEST_CASE("adaptation: near an unreachable target the effector moves smoothly as the target moves", "[adaptation]") {
+    const Scene scene("scout");
+    StrikeAdapter adapter(*scene.rig, scene.database.view());
+    const Eigen::Vector3d shoulder = scene.rig->positions()[scene.anatomy.limbs[int(Limb::arm_l)].root];
+    const double arm = scene.anatomy.limbs[int(Limb::arm_l)].length();
+    Pose pose;
+    std::vector<Eigen::Vector3d> path;
+    const double step = 0.005;
+    for (int k = 0; k < 60; ++k) { // the target slides across the edge of the reach, 5 mm at a time
+        const Eigen::Vector3d target = shoulder + Eigen::Vector3d(-0.15 + k * step, 0.05, arm + 0.25);
+        scene.begin(adapter, "punch", Side::left, target);
+        path.push_back(adapter.step(adapter.contact_index(), pose).effector);
+    }
+    double worst_jump = 0.0, least_agreement = 1.0;
+    for (std::size_t k = 1; k < path.size(); ++k) worst_jump = std::max(worst_jump, (path[k] - path[k - 1]).norm());
+    for (std::size_t k = 1; k + 1 < path.size(); ++k) {
+        least_agreement = std::min(least_agreement, (path[k + 1] - path[k]).normalized().dot((path[k] - path[k - 1]).normalized()));
+    }
+    INFO("largest step " << worst_jump << " m, least agreement of successive steps " << least_agreement);
+    CHECK(worst_jump < 3 * step);   // no jump bigger than a few target steps
+    CHECK(least_agreement > 0.5);   // and no back and forth
+    // The same frame and target give the same pose: nothing carries over from frame to frame.
+    const Eigen::Vector3d target = shoulder + Eigen::Vector3d(0.0, 0.05, arm + 0.25);
+    scene.begin(adapter, "punch", Side::left, target);
+    const Eigen::Vector3d first = adapter.step(adapter.contact_index(), pose).effector;
+    adapter.step(0, pose);
+    CHECK(adapter.step(adapter.contact_index(), pose).effector == first);
+}
+
+TEST_CASE("adaptation: a kick keeps its support foot down, and never starts on the kicking leg", "[adaptation]") {
+    const Scene scene("runner");
+    // Support-foot rule in the retrieval: with only the right foot down, a right kick cannot start; a left can.
+    RetrievalWorkspace workspace = scene.retriever->make_workspace();
+    RetrievalQuery on_right_foot = scene.query("kick", Side::right, Eigen::Vector3d(0.0, 1.0, 0.8));
+    on_right_foot.planted_feet = db_pose_right_foot_planted;
+    CHECK_FALSE(scene.retriever->query(on_right_foot, workspace).found);
+    CHECK_FALSE(scene.retriever->query_exhaustive(on_right_foot).found);
+    on_right_foot.side = Side::none;
+    const RetrievalResult left_kick = scene.retriever->query(on_right_foot, workspace);
+    REQUIRE(left_kick.found);
+    CHECK(scene.database.view().clips[left_kick.clip].segment == int(BodyPart::foot_l));
+
+    // Adapted: the support foot does not move or lift while the other kicks.
+    StrikeAdapter adapter(*scene.rig, scene.database.view());
+    scene.begin(adapter, "kick", Side::right, Eigen::Vector3d(-0.1, 1.0, 0.7));
+    CHECK(adapter.support_feet()[0]);
+    CHECK_FALSE(adapter.support_feet()[1]);
+    Pose pose;
+    double highest_right = 0.0;
+    for (int i = 0; i < adapter.frame_count(); ++i) {
+        adapter.step(i, pose);
+        const Eigen::Vector3d left_ankle = adapter.positions()[scene.anatomy.limbs[int(Limb::leg_l)].extremity];
+        CHECK((left_ankle - adapter.support_pins()[0]).norm() < 1e-6);
+        highest_right = std::max(highest_right, adapter.positions()[scene.anatomy.limbs[int(Limb::leg_r)].extremity].y());
+    }
+    CHECK(highest_right > 0.6); // the kicking foot did rise
+}

@@ -1,0 +1,204 @@
+// Adaptation accuracy and per-frame cost: for each character standing in the guard at the origin, random targets
+// inside its strike envelope (in front, between hip and head height, within arm reach of a shoulder — punches —
+// or leg reach of a hip — kicks — plus `--lean` metres for one step of torso lean), each retrieved and adapted
+// frame by frame. Reports, per strike semantics and overall: contact error (rate within 1 cm), support feet
+// lifted, foot drift, bone-length error; the per-frame cost of step() by regime (limb only / limb + trunk CCD /
+// unreachable), measured in the same run as a baseline (a plain decode of the same frames, no adaptation); and
+// heap allocations inside step() (must be 0). One thread.
+//
+// usage: adaptation_bench DB.kdb [--targets N] [--seed S] [--lean M] [--characters-dir DIR]. Prints one JSON document.
+
+#include "kumite/core/character_rig.h"
+#include "kumite/core/split_mix.h"
+#include "kumite/core/strike_adaptation.h"
+#include "kumite/formats/bvh_reader.h"
+#include "kumite/formats/motion_database_file.h"
+#include "support/allocation_counter.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
+#include <map>
+
+using namespace kumite;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+nlohmann::json summary(std::vector<double> values) {
+    if (values.empty()) return {{"count", 0}};
+    std::sort(values.begin(), values.end());
+    auto at = [&](double q) { return values[std::min(values.size() - 1, static_cast<std::size_t>(q * values.size()))]; };
+    return {{"count", values.size()}, {"median", at(0.5)}, {"p99", at(0.99)}, {"max", values.back()}};
+}
+
+double bone_length_error(const Skeleton& skeleton, std::span<const Eigen::Vector3d> positions) {
+    double worst = 0.0;
+    for (int joint = 1; joint < skeleton.joint_count(); ++joint) {
+        worst = std::max(worst, std::abs((positions[joint] - positions[skeleton.parents[joint]]).norm() - skeleton.rest_offsets[joint].norm()));
+    }
+    return worst;
+}
+
+struct Tally {
+    int strikes = 0, within_1cm = 0, lifted = 0, reached = 0;
+    std::vector<double> contact_errors, drifts;
+    double worst_bone = 0.0;
+};
+
+} // namespace
+
+int main(int argc, char** argv) {
+    std::string database_path;
+    int targets = 200;
+    std::uint64_t seed = 1;
+    double lean = 0.1;
+    std::filesystem::path characters_dir = std::getenv("KUMITE_CHARACTERS_DIR") ? std::getenv("KUMITE_CHARACTERS_DIR") : "data/characters";
+    for (int i = 1; i < argc; ++i) {
+        const std::string argument = argv[i];
+        if (argument == "--targets" && i + 1 < argc) targets = std::max(1, std::atoi(argv[++i]));
+        else if (argument == "--seed" && i + 1 < argc) seed = std::strtoull(argv[++i], nullptr, 10);
+        else if (argument == "--lean" && i + 1 < argc) lean = std::atof(argv[++i]);
+        else if (argument == "--characters-dir" && i + 1 < argc) characters_dir = argv[++i];
+        else if (!argument.starts_with("--") && database_path.empty()) database_path = argument;
+        else {
+            std::cerr << "usage: adaptation_bench DB.kdb [--targets N] [--seed S] [--lean M] [--characters-dir DIR]\n";
+            return 2;
+        }
+    }
+    if (database_path.empty()) {
+        std::cerr << "usage: adaptation_bench DB.kdb [--targets N] [--seed S] [--lean M] [--characters-dir DIR]\n";
+        return 2;
+    }
+    Result<MotionDatabase> database = MotionDatabase::open(database_path);
+    if (!database) {
+        std::cerr << "adaptation_bench: " << database.error().message << "\n";
+        return 1;
+    }
+    const MotionDatabaseView& db = database->view();
+    const Retriever retriever(db);
+    RetrievalWorkspace workspace = retriever.make_workspace();
+
+    std::map<std::string, Tally> tallies;
+    std::map<std::string, std::vector<double>> cost_by_regime;
+    std::vector<double> baseline_decode_us;
+    long allocations = 0, frames_stepped = 0;
+    SplitMix64 random{seed};
+    for (const char* name : {"kid", "scout", "brawler", "runner", "giant"}) {
+        Result<BvhFile> file = bvh_read_file(characters_dir / (std::string(name) + ".bvh"));
+        if (!file) {
+            std::cerr << "adaptation_bench: " << file.error().message << "\n";
+            return 1;
+        }
+        Result<RestAnatomy> anatomy = rest_anatomy_build(file->clip, file->body_map);
+        if (!anatomy) return 1;
+        const Skeleton& skeleton = file->clip.skeleton;
+        CharacterRig rig(skeleton, *anatomy);
+        Pose standing;
+        rig.stand_at_origin(standing, db);
+        std::array<float, k_feature_dimensions> feature;
+        rig.still_feature(feature);
+        const auto positions = rig.positions();
+        const double hip_y = positions[anatomy->body_map.joint(BodyPart::pelvis)].y();
+        const double head_y = positions[anatomy->body_map.joint(BodyPart::head)].y();
+        const std::array<Eigen::Vector3d, 2> ankles = {positions[anatomy->limbs[int(Limb::leg_l)].extremity],
+                                                       positions[anatomy->limbs[int(Limb::leg_r)].extremity]};
+        MirEncoder encoder(skeleton, *anatomy);
+        MirFrame current;
+        encoder.encode(current, standing.view());
+        MirDecoder plain_decoder(skeleton, *anatomy, {});
+        StrikeAdapter adapter(rig, db);
+        Pose pose;
+        rig.decode(pose, db, 0); // sizes the reused pose: the measured steps must not
+        MirFrame plain_frame;
+        db_mir_frame_load(plain_frame, db.mir_frames[0]);
+
+        for (int t = 0; t < targets; ++t) {
+            const bool kick = t % 2 == 1;
+            const int limb = kick ? int(Limb::leg_l) + int(random.next() % 2) : int(Limb::arm_l) + int(random.next() % 2);
+            const LimbChain& chain = anatomy->limbs[limb];
+            // A target in front, between hip and head height, within the limb's reach (+ lean) of its root.
+            Eigen::Vector3d target;
+            for (int attempt = 0; attempt < 1000; ++attempt) {
+                target = Eigen::Vector3d(random.uniform(-0.4, 0.4), random.uniform(hip_y, head_y), random.uniform(0.2, 1.2));
+                if ((target - positions[chain.root]).norm() <= chain.length() + lean && target.z() > positions[chain.root].z() + 0.15) break;
+            }
+            RetrievalQuery query;
+            query.pose_feature = feature;
+            query.heading = rig.heading();
+            query.character = rig.size();
+            query.semantics = retriever.semantics_id(kick ? "kick" : "punch");
+            query.side = limb % 2 == 0 ? Side::left : Side::right;
+            query.target_world = target;
+            const RetrievalResult retrieved = retriever.query(query, workspace);
+            if (!retrieved.found) continue;
+            adapter.begin({retrieved.clip, retrieved.start_frame, retrieved.contact_frame, retrieved.clip_to_world, target}, current,
+                          {true, true}, ankles);
+            Tally& tally = tallies[kick ? "kick" : "punch"];
+            ++tally.strikes;
+            double drift = 0.0, lift = 0.0;
+            AdaptedFrame at_contact;
+            for (int i = 0; i < adapter.frame_count(); ++i) {
+                kumite::test::allocation_count_reset();
+                kumite::test::allocation_counting(true);
+                const auto started = Clock::now();
+                const AdaptedFrame frame = adapter.step(i, pose);
+                const double elapsed = std::chrono::duration<double, std::micro>(Clock::now() - started).count();
+                kumite::test::allocation_counting(false);
+                allocations += kumite::test::allocations_counted();
+                ++frames_stepped;
+                cost_by_regime[frame.reach == Reach::limb ? "limb_only" : frame.reach == Reach::torso ? "limb_and_trunk" : "unreachable"].push_back(elapsed);
+                if (frame.contact) at_contact = frame;
+                tally.worst_bone = std::max(tally.worst_bone, bone_length_error(skeleton, adapter.positions()));
+                for (int foot = 0; foot < 2; ++foot) {
+                    if (!adapter.support_feet()[foot]) continue;
+                    const Eigen::Vector3d ankle = adapter.positions()[anatomy->limbs[2 + foot].extremity];
+                    const Eigen::Vector3d pin = adapter.support_pins()[foot];
+                    drift = std::max(drift, Eigen::Vector2d(ankle.x() - pin.x(), ankle.z() - pin.z()).norm());
+                    lift = std::max(lift, ankle.y() - pin.y());
+                }
+                // Baseline: the same clip frame decoded plainly, no blend, no pins, no IK.
+                const auto base_started = Clock::now();
+                db_mir_frame_load(plain_frame, db.mir_frames[db.clips[retrieved.clip].first_pose + retrieved.start_frame + i]);
+                plain_decoder.decode(pose, plain_frame);
+                baseline_decode_us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - base_started).count());
+            }
+            const double error = (at_contact.effector - target).norm();
+            tally.contact_errors.push_back(error);
+            tally.within_1cm += error <= 0.01;
+            tally.reached += at_contact.reach != Reach::unreachable;
+            tally.lifted += lift > 0.02;
+            tally.drifts.push_back(drift);
+        }
+    }
+    nlohmann::json report = {{"benchmark", "adaptation"}, {"database", database_path}, {"targets_per_character", targets}, {"lean_m", lean}};
+    Tally all;
+    for (const auto& [semantics, tally] : tallies) {
+        report["strikes"][semantics] = {{"strikes", tally.strikes},
+                                        {"contact_within_1cm_rate", double(tally.within_1cm) / std::max(1, tally.strikes)},
+                                        {"reached_rate", double(tally.reached) / std::max(1, tally.strikes)},
+                                        {"support_foot_lifted", tally.lifted},
+                                        {"contact_error_m", summary(tally.contact_errors)},
+                                        {"foot_drift_m", summary(tally.drifts)},
+                                        {"bone_length_error_m_max", tally.worst_bone}};
+        all.strikes += tally.strikes;
+        all.within_1cm += tally.within_1cm;
+        all.lifted += tally.lifted;
+        all.worst_bone = std::max(all.worst_bone, tally.worst_bone);
+        all.drifts.insert(all.drifts.end(), tally.drifts.begin(), tally.drifts.end());
+    }
+    report["overall"] = {{"strikes", all.strikes},
+                         {"contact_within_1cm_rate", double(all.within_1cm) / std::max(1, all.strikes)},
+                         {"support_foot_lifted", all.lifted},
+                         {"foot_drift_m", summary(all.drifts)},
+                         {"bone_length_error_m_max", all.worst_bone}};
+    for (const auto& [regime, costs] : cost_by_regime) report["frame_cost_us"][regime] = summary(costs);
+    report["frame_cost_us"]["baseline_plain_decode"] = summary(baseline_decode_us);
+    report["allocations_per_frame"] = double(allocations) / std::max(1L, frames_stepped);
+    report["frames"] = frames_stepped;
+    std::cout << report.dump(2) << "\n";
+    return 0;
+}
