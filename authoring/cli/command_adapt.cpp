@@ -47,16 +47,6 @@ nlohmann::json cost_json(std::vector<double> values) {
     return {{"median", at(0.5)}, {"p99", at(0.99)}, {"max", values.empty() ? 0.0 : values.back()}};
 }
 
-// The largest | |child - parent| - rest length | over the joints of one pose.
-double bone_length_error(const Skeleton& skeleton, std::span<const Eigen::Vector3d> positions) {
-    double worst = 0.0;
-    for (int joint = 1; joint < skeleton.joint_count(); ++joint) {
-        const double length = (positions[joint] - positions[skeleton.parents[joint]]).norm();
-        worst = std::max(worst, std::abs(length - skeleton.rest_offsets[joint].norm()));
-    }
-    return worst;
-}
-
 } // namespace
 
 int run_adapt(int argc, char** argv) {

@@ -1,6 +1,8 @@
 #include "kumite/core/forward_kinematics.h"
 
+#include <algorithm>
 #include <cassert>
+#include <cmath>
 
 namespace kumite {
 
@@ -35,6 +37,15 @@ void end_site_positions(std::span<Eigen::Vector3d> end_site_model_positions, con
         end_site_model_positions[i] =
             model_positions[end_site.joint] + model_rotations[end_site.joint] * end_site.offset_in_joint;
     }
+}
+
+double bone_length_error(const Skeleton& skeleton, std::span<const Eigen::Vector3d> positions) {
+    double worst = 0.0;
+    for (int joint = 1; joint < skeleton.joint_count(); ++joint) {
+        const double length = (positions[joint] - positions[skeleton.parents[joint]]).norm();
+        worst = std::max(worst, std::abs(length - skeleton.rest_offsets[joint].norm()));
+    }
+    return worst;
 }
 
 } // namespace kumite

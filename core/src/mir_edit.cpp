@@ -69,6 +69,39 @@ void mir_frame_blend(MirFrame& out, const MirFrame& a, const MirFrame& b, double
     out.source_local_rotations.clear();
 }
 
+void mir_frame_offset(MirFrame& offset, const MirFrame& from, const MirFrame& to) {
+    offset.hip_centre = from.hip_centre - to.hip_centre;
+    for (int part = 0; part < k_body_part_count; ++part) {
+        offset.has_part[part] = to.has_part[part];
+        offset.part_frames[part] = from.part_frames[part] * to.part_frames[part].conjugate();
+    }
+    for (auto [out, a, b] : {std::tuple{&offset.spine, &from.spine, &to.spine}, std::tuple{&offset.neck, &from.neck, &to.neck}}) {
+        out->count = b->count;
+        for (int k = 0; k < b->count; ++k) {
+            out->fractions[k] = b->fractions[k];
+            out->frames[k] = chain_sample(*a, b->fractions[k]) * b->frames[k].conjugate();
+        }
+    }
+    for (int limb = 0; limb < k_limb_count; ++limb) {
+        offset.extremity[limb] = from.extremity[limb] - to.extremity[limb];
+        offset.swivel[limb] = std::remainder(from.swivel[limb] - to.swivel[limb], 2.0 * std::numbers::pi);
+    }
+    offset.source_local_rotations.clear();
+}
+
+void mir_frame_add_offset(MirFrame& frame, const MirFrame& offset, double weight) {
+    const Eigen::Quaterniond identity = Eigen::Quaterniond::Identity();
+    frame.hip_centre += weight * offset.hip_centre;
+    for (int part = 0; part < k_body_part_count; ++part) frame.part_frames[part] = identity.slerp(weight, offset.part_frames[part]) * frame.part_frames[part];
+    for (auto [chain, delta] : {std::pair{&frame.spine, &offset.spine}, std::pair{&frame.neck, &offset.neck}}) {
+        for (int k = 0; k < chain->count; ++k) chain->frames[k] = identity.slerp(weight, chain_sample(*delta, chain->fractions[k])) * chain->frames[k];
+    }
+    for (int limb = 0; limb < k_limb_count; ++limb) {
+        frame.extremity[limb] += weight * offset.extremity[limb];
+        frame.swivel[limb] += weight * offset.swivel[limb];
+    }
+}
+
 void mir_frame_turn(MirFrame& frame, TrunkPivot pivot, const Eigen::Quaterniond& rotation, const Eigen::Vector3d& pivot_point,
                     double leg_length, double ankle_height) {
     switch (pivot) {

@@ -39,11 +39,14 @@ void StrikeAdapter::frame_mir(int index, MirFrame& out) {
     const DbClip& clip = m_db.clips[m_plan.clip];
     db_mir_frame_load(m_clip_frame, m_db.mir_frames[clip.first_pose + m_plan.start_frame + index]);
     mir_frame_move_on_floor(m_clip_frame, m_plan.clip_to_world, m_rig.anatomy().leg_length);
-    const double w = m_settings.blend_frames > 0 ? smoothstep(double(index) / m_settings.blend_frames) : 1.0;
-    if (w < 1.0) {
-        mir_frame_blend(out, m_current, m_clip_frame, w);
+    const double s = m_settings.blend_frames > 0 ? std::min(1.0, double(index) / m_settings.blend_frames) : 1.0;
+    out = m_clip_frame;
+    if (s >= 1.0) return;
+    if (m_settings.blend == BlendMode::ramp) {
+        mir_frame_blend(out, m_current, m_clip_frame, smoothstep(s));
     } else {
-        out = m_clip_frame;
+        const double decay = 1.0 - s * s * s * (10.0 - 15.0 * s + 6.0 * s * s); // quintic: zero slope and curvature at the end
+        mir_frame_add_offset(out, m_initial_offset, decay);
     }
 }
 
@@ -53,6 +56,9 @@ void StrikeAdapter::begin(const StrikePlan& plan, const MirFrame& current, const
     const DbClip& clip = m_db.clips[plan.clip];
     m_frame_count = static_cast<int>(clip.frame_count) - plan.start_frame;
     m_current = current;
+    db_mir_frame_load(m_clip_frame, m_db.mir_frames[clip.first_pose + plan.start_frame]);
+    mir_frame_move_on_floor(m_clip_frame, plan.clip_to_world, m_rig.anatomy().leg_length);
+    mir_frame_offset(m_initial_offset, current, m_clip_frame);
     m_limb = limb_of_segment(static_cast<BodyPart>(std::max(0, clip.segment)));
     m_arm = m_limb < 2;
     m_effector_joint = m_rig.anatomy().limbs[m_limb].extremity;

@@ -3,8 +3,8 @@
 // feet, exact bone lengths, and the support-foot rule of the retrieval.
 
 #include "kumite/core/strike_adaptation.h"
-#include "kumite/formats/bvh_reader.h"
 #include "kumite/formats/motion_database_file.h"
+#include "support/standing_character.h"
 #include "support/test_paths.h"
 
 #include <catch2/catch.hpp>
@@ -13,45 +13,24 @@ using namespace kumite;
 
 namespace {
 
+// The golden database, a retriever, and a character standing in its guard.
 struct Scene {
     MotionDatabase database;
-    BvhFile file;
-    RestAnatomy anatomy;
-    std::unique_ptr<CharacterRig> rig;
     std::unique_ptr<Retriever> retriever;
-    Pose standing;
-    std::array<float, k_feature_dimensions> feature{};
-    MirFrame current;
-    std::array<Eigen::Vector3d, 2> ankles;
+    std::unique_ptr<kumite::test::StandingCharacter> character;
 
-    explicit Scene(const std::string& character) {
+    explicit Scene(const std::string& name) {
         Result<MotionDatabase> opened = MotionDatabase::open(kumite::test::source_dir() / "data/golden/golden-v1.kdb");
         REQUIRE(opened.has_value());
         database = std::move(*opened);
-        Result<BvhFile> read = bvh_read_file(kumite::test::source_dir() / "data/characters" / (character + ".bvh"));
-        REQUIRE(read.has_value());
-        file = std::move(*read);
-        Result<RestAnatomy> built = rest_anatomy_build(file.clip, file.body_map);
-        REQUIRE(built.has_value());
-        anatomy = std::move(*built);
-        rig = std::make_unique<CharacterRig>(file.clip.skeleton, anatomy);
         retriever = std::make_unique<Retriever>(database.view());
-        rig->stand_at_origin(standing, database.view());
-        rig->still_feature(feature);
-        MirEncoder encoder(file.clip.skeleton, anatomy);
-        encoder.encode(current, standing.view());
-        ankles = {rig->positions()[anatomy.limbs[2].extremity], rig->positions()[anatomy.limbs[3].extremity]};
+        character = std::make_unique<kumite::test::StandingCharacter>(name, database.view());
     }
+    const RestAnatomy& anatomy() const { return character->anatomy; }
+    const CharacterRig& rig() const { return *character->rig; }
 
     RetrievalQuery query(const char* semantics, Side side, const Eigen::Vector3d& target) const {
-        RetrievalQuery q;
-        q.pose_feature = feature;
-        q.heading = rig->heading();
-        q.character = rig->size();
-        q.semantics = retriever->semantics_id(semantics);
-        q.side = side;
-        q.target_world = target;
-        return q;
+        return character->order(*retriever, semantics, side, target);
     }
 
     // Retrieves and begins; returns the plan.
@@ -60,18 +39,10 @@ struct Scene {
         const RetrievalResult result = retriever->query(query(semantics, side, target), workspace);
         REQUIRE(result.found);
         const StrikePlan plan{result.clip, result.start_frame, result.contact_frame, result.clip_to_world, target};
-        adapter.begin(plan, current, {true, true}, ankles);
+        adapter.begin(plan, character->mir, {true, true}, character->ankles);
         return plan;
     }
 };
-
-double bone_error(const Skeleton& skeleton, std::span<const Eigen::Vector3d> positions) {
-    double worst = 0.0;
-    for (int joint = 1; joint < skeleton.joint_count(); ++joint) {
-        worst = std::max(worst, std::abs((positions[joint] - positions[skeleton.parents[joint]]).norm() - skeleton.rest_offsets[joint].norm()));
-    }
-    return worst;
-}
 
 } // namespace
 
@@ -100,22 +71,22 @@ TEST_CASE("adaptation: the constraint ramp rises and falls smoothly", "[adaptati
 TEST_CASE("adaptation: a reachable target is met at the contact frame by the limb alone, with exact bones and planted feet", "[adaptation]") {
     for (const char* character : {"kid", "scout", "brawler", "runner", "giant"}) {
         const Scene scene(character);
-        StrikeAdapter adapter(*scene.rig, scene.database.view());
+        StrikeAdapter adapter(scene.rig(), scene.database.view());
         // A point between the shoulder and where the punch passes anyway: well inside the arm's reach.
         RetrievalWorkspace workspace = scene.retriever->make_workspace();
         const RetrievalResult natural =
             scene.retriever->query(scene.query("punch", Side::left, Eigen::Vector3d(0.1, 1.0, 0.5)), workspace);
         REQUIRE(natural.found);
-        const Eigen::Vector3d shoulder = scene.rig->positions()[scene.anatomy.limbs[int(Limb::arm_l)].root];
+        const Eigen::Vector3d shoulder = scene.rig().positions()[scene.anatomy().limbs[int(Limb::arm_l)].root];
         const Eigen::Vector3d target = shoulder + 0.8 * (natural.contact_point_world - shoulder);
         scene.begin(adapter, "punch", Side::left, target);
         Pose pose;
         INFO(character);
         for (int i = 0; i < adapter.frame_count(); ++i) {
             const AdaptedFrame frame = adapter.step(i, pose);
-            CHECK(bone_error(scene.file.clip.skeleton, adapter.positions()) < 1e-9);
+            CHECK(bone_length_error(scene.character->skeleton(), adapter.positions()) < 1e-9);
             for (int foot = 0; foot < 2; ++foot) {
-                if (adapter.support_feet()[foot]) CHECK((adapter.positions()[scene.anatomy.limbs[2 + foot].extremity] - adapter.support_pins()[foot]).norm() < 1e-6);
+                if (adapter.support_feet()[foot]) CHECK((adapter.positions()[scene.anatomy().limbs[2 + foot].extremity] - adapter.support_pins()[foot]).norm() < 1e-6);
             }
             if (frame.contact) {
                 CHECK(frame.reach == Reach::limb);
@@ -129,10 +100,10 @@ TEST_CASE("adaptation: a reachable target is met at the contact frame by the lim
 
 TEST_CASE("adaptation: beyond the arm the trunk leans within its limits; far away it stops at the closest point", "[adaptation]") {
     const Scene scene("brawler");
-    StrikeAdapter adapter(*scene.rig, scene.database.view());
+    StrikeAdapter adapter(scene.rig(), scene.database.view());
     const AdaptationSettings limits;
-    const Eigen::Vector3d shoulder = scene.rig->positions()[scene.anatomy.limbs[int(Limb::arm_l)].root];
-    const double arm = scene.anatomy.limbs[int(Limb::arm_l)].length();
+    const Eigen::Vector3d shoulder = scene.rig().positions()[scene.anatomy().limbs[int(Limb::arm_l)].root];
+    const double arm = scene.anatomy().limbs[int(Limb::arm_l)].length();
     Pose pose;
 
     // Past the arm's reach in front of the shoulder: the first distance where the trunk has to lean.
@@ -157,17 +128,17 @@ TEST_CASE("adaptation: beyond the arm the trunk leans within its limits; far awa
     CHECK(far.pivot_turn_rad[0] <= limits.clavicle_limit_rad + 1e-9);
     CHECK(far.pivot_turn_rad[1] <= limits.chest_limit_rad + 1e-9);
     CHECK(far.pivot_turn_rad[2] <= limits.spine_base_limit_rad + 1e-9);
-    const Eigen::Vector3d arm_root = adapter.positions()[scene.anatomy.limbs[int(Limb::arm_l)].root];
+    const Eigen::Vector3d arm_root = adapter.positions()[scene.anatomy().limbs[int(Limb::arm_l)].root];
     CHECK((far.effector - arm_root).norm() == Approx(arm).epsilon(1e-3)); // fully extended
     CHECK((far.effector - arm_root).normalized().dot((far_target - arm_root).normalized()) > 0.999); // pointing at it
-    CHECK(bone_error(scene.file.clip.skeleton, adapter.positions()) < 1e-9);
+    CHECK(bone_length_error(scene.character->skeleton(), adapter.positions()) < 1e-9);
 }
 
 TEST_CASE("adaptation: near an unreachable target the effector moves smoothly as the target moves", "[adaptation]") {
     const Scene scene("scout");
-    StrikeAdapter adapter(*scene.rig, scene.database.view());
-    const Eigen::Vector3d shoulder = scene.rig->positions()[scene.anatomy.limbs[int(Limb::arm_l)].root];
-    const double arm = scene.anatomy.limbs[int(Limb::arm_l)].length();
+    StrikeAdapter adapter(scene.rig(), scene.database.view());
+    const Eigen::Vector3d shoulder = scene.rig().positions()[scene.anatomy().limbs[int(Limb::arm_l)].root];
+    const double arm = scene.anatomy().limbs[int(Limb::arm_l)].length();
     Pose pose;
     std::vector<Eigen::Vector3d> path;
     const double step = 0.005;
@@ -206,7 +177,7 @@ TEST_CASE("adaptation: a kick keeps its support foot down, and never starts on t
     CHECK(scene.database.view().clips[left_kick.clip].segment == int(BodyPart::foot_l));
 
     // Adapted: the support foot does not move or lift while the other kicks.
-    StrikeAdapter adapter(*scene.rig, scene.database.view());
+    StrikeAdapter adapter(scene.rig(), scene.database.view());
     scene.begin(adapter, "kick", Side::right, Eigen::Vector3d(-0.1, 1.0, 0.7));
     CHECK(adapter.support_feet()[0]);
     CHECK_FALSE(adapter.support_feet()[1]);
@@ -214,9 +185,9 @@ TEST_CASE("adaptation: a kick keeps its support foot down, and never starts on t
     double highest_right = 0.0;
     for (int i = 0; i < adapter.frame_count(); ++i) {
         adapter.step(i, pose);
-        const Eigen::Vector3d left_ankle = adapter.positions()[scene.anatomy.limbs[int(Limb::leg_l)].extremity];
+        const Eigen::Vector3d left_ankle = adapter.positions()[scene.anatomy().limbs[int(Limb::leg_l)].extremity];
         CHECK((left_ankle - adapter.support_pins()[0]).norm() < 1e-6);
-        highest_right = std::max(highest_right, adapter.positions()[scene.anatomy.limbs[int(Limb::leg_r)].extremity].y());
+        highest_right = std::max(highest_right, adapter.positions()[scene.anatomy().limbs[int(Limb::leg_r)].extremity].y());
     }
     CHECK(highest_right > 0.6); // the kicking foot did rise
 }

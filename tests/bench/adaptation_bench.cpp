@@ -4,11 +4,13 @@
 // frame by frame. Reports, per strike semantics and overall: contact error (rate within 1 cm), support feet
 // lifted, foot drift, bone-length error; the per-frame cost of step() by regime (limb only / limb + trunk CCD /
 // unreachable), measured in the same run as a baseline (a plain decode of the same frames, no adaptation); and
-// heap allocations inside step() (must be 0). One thread.
+// heap allocations inside step() (must be 0); and the pop each blend mode leaves: the largest joint
+// acceleration over the blend-in (from the guard, standing still), ramp against inertialization. One thread.
 //
 // usage: adaptation_bench DB.kdb [--targets N] [--seed S] [--lean M] [--characters-dir DIR]. Prints one JSON document.
 
 #include "kumite/core/character_rig.h"
+#include "kumite/core/forward_kinematics.h"
 #include "kumite/core/split_mix.h"
 #include "kumite/core/strike_adaptation.h"
 #include "kumite/formats/bvh_reader.h"
@@ -33,14 +35,6 @@ nlohmann::json summary(std::vector<double> values) {
     std::sort(values.begin(), values.end());
     auto at = [&](double q) { return values[std::min(values.size() - 1, static_cast<std::size_t>(q * values.size()))]; };
     return {{"count", values.size()}, {"median", at(0.5)}, {"p99", at(0.99)}, {"max", values.back()}};
-}
-
-double bone_length_error(const Skeleton& skeleton, std::span<const Eigen::Vector3d> positions) {
-    double worst = 0.0;
-    for (int joint = 1; joint < skeleton.joint_count(); ++joint) {
-        worst = std::max(worst, std::abs((positions[joint] - positions[skeleton.parents[joint]]).norm() - skeleton.rest_offsets[joint].norm()));
-    }
-    return worst;
 }
 
 struct Tally {
@@ -84,6 +78,7 @@ int main(int argc, char** argv) {
 
     std::map<std::string, Tally> tallies;
     std::map<std::string, std::vector<double>> cost_by_regime;
+    std::map<std::string, std::vector<double>> blend_pop; // per blend mode: largest joint acceleration, m/s^2
     std::vector<double> baseline_decode_us;
     long allocations = 0, frames_stepped = 0;
     SplitMix64 random{seed};
@@ -166,6 +161,24 @@ int main(int argc, char** argv) {
                 plain_decoder.decode(pose, plain_frame);
                 baseline_decode_us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - base_started).count());
             }
+            // The pop of each blend mode: joint accelerations from the still guard into the first frames.
+            const double dt = db.meta.frame_time_s;
+            for (BlendMode mode : {BlendMode::ramp, BlendMode::inertialization}) {
+                adapter.settings().blend = mode;
+                std::vector<Eigen::Vector3d> before(positions.begin(), positions.end()), previous = before;
+                double worst = 0.0;
+                for (int i = 0; i < std::min(adapter.frame_count(), adapter.settings().blend_frames + 3); ++i) {
+                    adapter.step(i, pose);
+                    for (int joint = 0; joint < skeleton.joint_count(); ++joint) {
+                        const Eigen::Vector3d& now = adapter.positions()[joint];
+                        worst = std::max(worst, (now - 2.0 * previous[joint] + before[joint]).norm() / (dt * dt));
+                    }
+                    before = previous;
+                    previous.assign(adapter.positions().begin(), adapter.positions().end());
+                }
+                blend_pop[mode == BlendMode::ramp ? "ramp" : "inertialization"].push_back(worst);
+            }
+            adapter.settings().blend = BlendMode::ramp;
             const double error = (at_contact.effector - target).norm();
             tally.contact_errors.push_back(error);
             tally.within_1cm += error <= 0.01;
@@ -198,6 +211,7 @@ int main(int argc, char** argv) {
     for (const auto& [regime, costs] : cost_by_regime) report["frame_cost_us"][regime] = summary(costs);
     report["frame_cost_us"]["baseline_plain_decode"] = summary(baseline_decode_us);
     report["allocations_per_frame"] = double(allocations) / std::max(1L, frames_stepped);
+    for (const auto& [mode, values] : blend_pop) report["blend_pop_m_s2"][mode] = summary(values);
     report["frames"] = frames_stepped;
     std::cout << report.dump(2) << "\n";
     return 0;

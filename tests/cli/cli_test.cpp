@@ -344,3 +344,35 @@ TEST_CASE("cli: query refuses what it cannot answer, saying why", "[cli][corpus]
     const std::filesystem::path corrupt = write_text("corrupt.kdb", "KUMITEDB but not really");
     CHECK(run_command(kumite_exe() + " query " + corrupt.string() + " --character kid --target 0,1,1 --command punch").status == 1);
 }
+
+TEST_CASE("cli: adapt writes a BVH on the character and a report with the contract's keys", "[cli][corpus]") {
+    if (!std::filesystem::exists(kumite::test::mocap_root() / "bandai-namco-1")) return;
+    const std::string db = baked_golden().string();
+    const std::filesystem::path folder = kumite::test::make_temp_dir("cli-adapt");
+    const std::string bvh = (folder / "kick.bvh").string(), report = (folder / "kick.json").string();
+    const auto result = run_command(kumite_exe() + " adapt " + db + " --character runner --target -0.1,0.9,0.6 --command kick --side right" +
+                                    " --record " + bvh + " --report " + report);
+    INFO(result.err);
+    REQUIRE(result.status == 0);
+    const nlohmann::json document = nlohmann::json::parse(file_bytes(report));
+    for (const char* key : {"effector", "contact_frame", "effector_at_contact", "target", "contact_error_m", "reachable",
+                            "bone_length_error_m", "foot_drift_m", "support_foot_lifted", "frame_cost_us"}) {
+        CHECK(document.contains(key));
+    }
+    CHECK(document["effector"] == "Foot_R");
+    CHECK(document["reachable"] == true);
+    CHECK(document["contact_error_m"].get<double>() < 0.01);
+    CHECK(document["support_foot_lifted"] == false);
+    CHECK(document["bone_length_error_m"].get<double>() < 1e-4);
+    for (const char* key : {"median", "p99", "max"}) CHECK(document["frame_cost_us"].contains(key));
+    // The BVH is the runner's skeleton, and its contact frame exists.
+    const auto inspect = run_command(kumite_exe() + " inspect " + bvh + " --json");
+    REQUIRE(inspect.status == 0);
+    const nlohmann::json summary = nlohmann::json::parse(inspect.out);
+    CHECK(summary["frames"].get<int>() > document["contact_frame"].get<int>());
+    const auto runner = run_command(kumite_exe() + " inspect " + (kumite::test::source_dir() / "data/characters/runner.bvh").string() + " --json");
+    CHECK(nlohmann::json::parse(runner.out)["joint_names"] == summary["joint_names"]);
+
+    CHECK(run_command(kumite_exe() + " adapt " + db + " --character runner --command kick --record " + bvh).status == 2); // no target
+    CHECK(run_command(kumite_exe() + " adapt " + db + " --character runner --target 0,1,1 --command kick").status == 2); // no record
+}

@@ -8,6 +8,7 @@
 #include "kumite/core/retrieval.h"
 #include "kumite/core/split_mix.h"
 #include "kumite/formats/bvh_reader.h"
+#include "support/standing_character.h"
 #include "support/test_paths.h"
 
 #include <catch2/catch.hpp>
@@ -32,33 +33,7 @@ const MotionDatabaseContent* reference_database() {
     return database ? &*database : nullptr;
 }
 
-// A character standing at the origin in the guard, ready to query.
-struct Standing {
-    BvhFile file;
-    RestAnatomy anatomy;
-    std::unique_ptr<CharacterRig> rig;
-    std::array<float, k_feature_dimensions> feature{};
-    RetrievalQuery query;
-    double pelvis_y = 0.0, head_y = 0.0;
-
-    Standing(const std::string& name, const MotionDatabaseView& database) {
-        Result<BvhFile> read = bvh_read_file(kumite::test::source_dir() / "data/characters" / (name + ".bvh"));
-        REQUIRE(read.has_value());
-        file = std::move(*read);
-        Result<RestAnatomy> built = rest_anatomy_build(file.clip, file.body_map);
-        REQUIRE(built.has_value());
-        anatomy = std::move(*built);
-        rig = std::make_unique<CharacterRig>(file.clip.skeleton, anatomy);
-        Pose pose;
-        rig->stand_at_origin(pose, database);
-        rig->still_feature(feature);
-        query.pose_feature = feature;
-        query.heading = rig->heading();
-        query.character = rig->size();
-        pelvis_y = rig->positions()[anatomy.body_map.joint(BodyPart::pelvis)].y();
-        head_y = rig->positions()[anatomy.body_map.joint(BodyPart::head)].y();
-    }
-};
+using Standing = kumite::test::StandingCharacter;
 
 const char* k_characters[] = {"kid", "scout", "brawler", "runner", "giant"};
 

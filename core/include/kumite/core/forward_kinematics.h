@@ -18,4 +18,8 @@ void end_site_positions(std::span<Eigen::Vector3d> end_site_model_positions, con
                         std::span<const Eigen::Vector3d> model_positions,
                         std::span<const Eigen::Quaterniond> model_rotations);
 
+// The largest | |child - parent| - rest length | over the bones of a pose whose joints use their rest offsets
+// (metres): how far a pose stretches or shrinks its skeleton.
+double bone_length_error(const Skeleton& skeleton, std::span<const Eigen::Vector3d> model_positions);
+
 } // namespace kumite

@@ -15,6 +15,12 @@ void mir_frame_move_on_floor(MirFrame& frame, const FloorAlignment& motion, doub
 // chains take b's joint fractions (a's chains are sampled there). `out` must not alias a or b.
 void mir_frame_blend(MirFrame& out, const MirFrame& a, const MirFrame& b, double w);
 
+// Inertialization (Bollo 2016) in MIR space: the offset that takes frame `to` onto frame `from` (hip centre,
+// extremity and swivel differences; part and chain frames as rotations from `to`'s to `from`'s, chains at
+// `to`'s fractions), stored in a MirFrame; then `frame` plus `weight` times that offset.
+void mir_frame_offset(MirFrame& offset, const MirFrame& from, const MirFrame& to);
+void mir_frame_add_offset(MirFrame& frame, const MirFrame& offset, double weight);
+
 // The trunk joints the CCD may turn, and what each carries.
 enum class TrunkPivot {
     spine_base, // the first spine joint above the pelvis: spine chain, chest, neck, head, both arms

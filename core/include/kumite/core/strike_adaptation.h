@@ -4,7 +4,8 @@
 //
 // Per frame i (clip frame start + i, at the database's frame rate):
 //  1. the clip's MIR frame, moved by the retrieval's alignment, blended from the MIR frame the character was in
-//     when the strike began (smoothstep weight over `blend_frames`: a ramp, C1 at both ends);
+//     when the strike began over `blend_frames`: a ramp (smoothstep weight, C1 at both ends) or an
+//     inertialization (the clip plus the starting offset decayed by a quintic; BlendMode);
 //  2. the constraint ramp: the hit point is driven to p(t) + d(t), with d(t) = ramp(t) * d(tc), d(tc) the offset
 //     between where the hit point would be at the contact frame and the target (constraint_ramp below);
 //  3. the limb alone: the decoder's analytic two-bone solve of that limb, swivel kept;
@@ -27,8 +28,15 @@ namespace kumite {
 // `recovery` after tc; 0 after. Times in frames (any unit).
 double constraint_ramp(double t, double t0, double tc, double recovery);
 
+// How the strike takes over from the current motion (see adaptation_bench's blend_pop for the measurement).
+enum class BlendMode {
+    ramp,            // slerp from the current pose towards the clip, smoothstep weight
+    inertialization, // the clip plus the initial offset (current - clip), decayed by a quintic to 0
+};
+
 struct AdaptationSettings {
     int blend_frames = 6;            // blend-in from the current motion (0.2 s at 30 fps)
+    BlendMode blend = BlendMode::ramp;
     int recovery_frames = 8;         // d(t) back to 0 after the contact
     double reach_tolerance_m = 0.001;
     int ccd_iterations = 4;          // sweeps over the pivots (measured: 8 gains nothing, costs twice)
@@ -69,6 +77,7 @@ public:
     void begin(const StrikePlan& plan, const MirFrame& current, const std::array<bool, 2>& planted,
                const std::array<Eigen::Vector3d, 2>& ankles_world);
     const StrikePlan& plan() const { return m_plan; }
+    AdaptationSettings& settings() { return m_settings; }
     bool arm_strike() const { return m_arm; }
 
     int frame_count() const { return m_frame_count; }   // start .. the clip's last frame
@@ -96,6 +105,7 @@ private:
     MirDecoder m_decoder;
     StrikePlan m_plan;
     MirFrame m_current;      // where the character was when the strike began
+    MirFrame m_initial_offset; // inertialization: current minus the clip's first frame
     MirFrame m_clip_frame;   // scratch
     MirFrame m_frame;        // scratch: the frame being decoded
     Pose m_scratch_pose;

@@ -1,0 +1,66 @@
+// What a frame loop calls allocates nothing once set up: retrieval queries (with the caller's workspace) and
+// adapting a strike frame by frame (after the adapter's first strike).
+
+#include "kumite/core/strike_adaptation.h"
+#include "kumite/formats/bvh_reader.h"
+#include "kumite/formats/motion_database_file.h"
+#include "support/allocation_counter.h"
+#include "support/standing_character.h"
+#include "support/test_paths.h"
+
+#include <catch2/catch.hpp>
+
+using namespace kumite;
+
+namespace {
+
+MotionDatabase golden() {
+    Result<MotionDatabase> opened = MotionDatabase::open(kumite::test::source_dir() / "data/golden/golden-v1.kdb");
+    REQUIRE(opened.has_value());
+    return std::move(*opened);
+}
+
+} // namespace
+
+TEST_CASE("retrieval: fast and exhaustive queries allocate nothing", "[core]") {
+    const MotionDatabase database = golden();
+    const kumite::test::StandingCharacter standing("brawler", database.view());
+    const Retriever retriever(database.view());
+    RetrievalWorkspace workspace = retriever.make_workspace();
+    RetrievalQuery query = standing.query;
+    int found = 0;
+    kumite::test::AllocationScope scope;
+    for (int i = 0; i < 50; ++i) {
+        query.semantics = retriever.semantics_id(i % 2 ? "kick" : "punch");
+        query.side = i % 3 == 0 ? Side::none : i % 3 == 1 ? Side::left : Side::right;
+        query.target_world = Eigen::Vector3d(0.02 * (i - 25), 0.8 + 0.02 * i, 0.5 + 0.01 * i);
+        found += retriever.query(query, workspace).found;
+        found += retriever.query_exhaustive(query).found;
+    }
+    CHECK(scope.count() == 0);
+    CHECK(found > 50);
+}
+
+TEST_CASE("adaptation: begin and step allocate nothing after the first strike", "[core]") {
+    const MotionDatabase database = golden();
+    const kumite::test::StandingCharacter standing("giant", database.view());
+    const Retriever retriever(database.view());
+    RetrievalWorkspace workspace = retriever.make_workspace();
+    auto plan_for = [&](const char* semantics, const Eigen::Vector3d& target) {
+        const RetrievalResult found = retriever.query(standing.order(retriever, semantics, Side::none, target), workspace);
+        REQUIRE(found.found);
+        return StrikePlan{found.clip, found.start_frame, found.contact_frame, found.clip_to_world, target};
+    };
+    const StrikePlan first = plan_for("punch", Eigen::Vector3d(0.1, 1.5, 0.6));
+    const StrikePlan far = plan_for("kick", Eigen::Vector3d(0.0, 1.4, 2.5)); // unreachable: the CCD runs
+    StrikeAdapter adapter(*standing.rig, database.view());
+    Pose pose;
+    adapter.begin(first, standing.mir, {true, true}, standing.ankles);
+    adapter.step(0, pose); // sizes the pose
+    kumite::test::AllocationScope scope;
+    for (const StrikePlan& plan : {first, far}) {
+        adapter.begin(plan, standing.mir, {true, true}, standing.ankles);
+        for (int i = 0; i < adapter.frame_count(); ++i) adapter.step(i, pose);
+    }
+    CHECK(scope.count() == 0);
+}
