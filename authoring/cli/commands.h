@@ -41,4 +41,7 @@ int run_query(int argc, char** argv);
 const CommandSpec& adapt_spec();
 int run_adapt(int argc, char** argv);
 
+const CommandSpec& play_spec();
+int run_play(int argc, char** argv);
+
 } // namespace kumite::cli

@@ -10,7 +10,7 @@ namespace {
 
 using kumite::cli::Command;
 
-constexpr std::array<Command, 10> k_commands = {{
+constexpr std::array<Command, 11> k_commands = {{
     {kumite::cli::inspect_spec, kumite::cli::run_inspect},
     {kumite::cli::positions_spec, kumite::cli::run_positions},
     {kumite::cli::convert_spec, kumite::cli::run_convert},
@@ -21,6 +21,7 @@ constexpr std::array<Command, 10> k_commands = {{
     {kumite::cli::db_info_spec, kumite::cli::run_db_info},
     {kumite::cli::query_spec, kumite::cli::run_query},
     {kumite::cli::adapt_spec, kumite::cli::run_adapt},
+    {kumite::cli::play_spec, kumite::cli::run_play},
 }};
 
 void print_overview(std::ostream& out) {

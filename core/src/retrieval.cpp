@@ -123,6 +123,19 @@ int Retriever::semantics_id(std::string_view semantics) const {
     return found == m_semantics_names.end() ? -1 : static_cast<int>(found - m_semantics_names.begin());
 }
 
+FloorAlignment clip_alignment(const MotionDatabaseView& db, int clip, int frame, double character_leg_m, const HeadingFrame& heading) {
+    // The decoded clip's world is the clip's scaled by the leg-length ratio (the MIR stores the hip centre in leg
+    // lengths), so its heading sits at the scaled origin, with the same yaw.
+    const DbClip& record = db.clips[clip];
+    const DbPose& start = db.poses[record.first_pose + frame];
+    const double decoded_scale = character_leg_m / db.actors[record.actor].leg_length_m;
+    FloorAlignment alignment{heading.yaw_rad - start.heading[2], 0.0, 0.0};
+    const Eigen::Vector3d turned = alignment.apply(Eigen::Vector3d(start.heading[0] * decoded_scale, 0.0, start.heading[1] * decoded_scale));
+    alignment.x = heading.origin.x() - turned.x();
+    alignment.z = heading.origin.z() - turned.z();
+    return alignment;
+}
+
 RetrievalWorkspace Retriever::make_workspace() const {
     RetrievalWorkspace workspace;
     workspace.group_order.resize(m_db.clusters.size() * 3 * 2); // every side and limb of one semantics
@@ -179,16 +192,7 @@ void Retriever::finish(RetrievalResult& result, const RetrievalQuery& query) con
     const ClipInfo& clip = m_clips[result.clip];
     const DbPose& start = m_db.poses[result.start_pose];
     result.time_to_contact_s = (result.contact_frame - result.start_frame) * static_cast<double>(m_db.meta.frame_time_s);
-    // The decoded clip's world is the clip's scaled by the leg-length ratio (the MIR stores the hip centre in leg
-    // lengths), so its start heading sits at the scaled origin, with the same yaw.
-    const double decoded_scale = query.character.leg_length_m / clip.actor_leg_length;
-    const double angle = query.heading.yaw_rad - start.heading[2];
-    result.clip_to_world.angle_rad = angle;
-    const Eigen::Vector3d start_origin(start.heading[0] * decoded_scale, 0.0, start.heading[1] * decoded_scale);
-    FloorAlignment rotation_only{angle, 0.0, 0.0};
-    const Eigen::Vector3d turned = rotation_only.apply(start_origin);
-    result.clip_to_world.x = query.heading.origin.x() - turned.x();
-    result.clip_to_world.z = query.heading.origin.z() - turned.z();
+    result.clip_to_world = clip_alignment(m_db, result.clip, result.start_frame, query.character.leg_length_m, query.heading);
     const PoseInfo& info = m_poses[result.start_pose];
     const Eigen::Vector3d contact_in_start =
         to_start_heading(start, info.heading_cos, info.heading_sin, m_db.poses[record.first_pose + result.contact_frame].hit_point);

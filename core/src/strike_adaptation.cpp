@@ -35,11 +35,23 @@ StrikeAdapter::StrikeAdapter(const CharacterRig& rig, const MotionDatabaseView& 
     m_pivot_turns.fill(Eigen::Quaterniond::Identity());
 }
 
-void StrikeAdapter::frame_mir(int index, MirFrame& out) {
+void StrikeAdapter::load_clip_frame(int index, MirFrame& out) const {
     const DbClip& clip = m_db.clips[m_plan.clip];
-    db_mir_frame_load(m_clip_frame, m_db.mir_frames[clip.first_pose + m_plan.start_frame + index]);
-    mir_frame_move_on_floor(m_clip_frame, m_plan.clip_to_world, m_rig.anatomy().leg_length);
-    const double s = m_settings.blend_frames > 0 ? std::min(1.0, double(index) / m_settings.blend_frames) : 1.0;
+    const int frame = std::clamp(m_plan.start_frame + index, 0, static_cast<int>(clip.frame_count) - 1);
+    db_mir_frame_load(out, m_db.mir_frames[clip.first_pose + frame]);
+    mir_frame_move_on_floor(out, m_plan.clip_to_world, m_rig.anatomy().leg_length);
+}
+
+void StrikeAdapter::frame_mir(double index, MirFrame& out) {
+    const int whole = static_cast<int>(std::floor(index));
+    const double fraction = index - whole;
+    load_clip_frame(whole, m_clip_frame);
+    if (fraction > 1e-9) {
+        load_clip_frame(whole + 1, m_next_frame);
+        mir_frame_blend(out, m_clip_frame, m_next_frame, fraction);
+        m_clip_frame = out;
+    }
+    const double s = m_settings.blend_frames > 0 ? std::min(1.0, index / m_settings.blend_frames) : 1.0;
     out = m_clip_frame;
     if (s >= 1.0) return;
     if (m_settings.blend == BlendMode::ramp) {
@@ -139,9 +151,9 @@ double StrikeAdapter::pivot_limit(TrunkPivot pivot) const {
     return 0.0;
 }
 
-AdaptedFrame StrikeAdapter::step(int index, Pose& out) {
+AdaptedFrame StrikeAdapter::step(double index, Pose& out) {
     AdaptedFrame result;
-    result.contact = index == contact_index();
+    result.contact = index == static_cast<double>(contact_index());
     frame_mir(index, m_frame);
     result.ramp = constraint_ramp(index, 0.0, contact_index(), m_settings.recovery_frames);
     LimbPins pins = m_pins;

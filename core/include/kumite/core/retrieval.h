@@ -100,6 +100,11 @@ struct RetrievalWorkspace {
     std::vector<double> centroid_distance;           // [cluster] sqrt(Kovar / points)
 };
 
+// The floor motion that puts frame `frame` of clip `clip`, decoded on a character of leg length
+// `character_leg_m`, onto `heading` (world): its heading frame lands on `heading`. A point p of the decoded clip
+// goes to the result's apply(p).
+FloorAlignment clip_alignment(const MotionDatabaseView& database, int clip, int frame, double character_leg_m, const HeadingFrame& heading);
+
 class Retriever {
 public:
     explicit Retriever(const MotionDatabaseView& database, RetrievalSettings settings = {});

@@ -86,13 +86,17 @@ public:
     const std::array<bool, 2>& support_feet() const { return m_support; }
     const std::array<Eigen::Vector3d, 2>& support_pins() const { return m_support_pins; }
 
-    // Frame `index` (0 = the start frame) into `out`; model transforms of it in positions() / rotations().
-    AdaptedFrame step(int index, Pose& out);
+    // Frame `index` (0 = the start frame) into `out`; model transforms of it in positions() / rotations(). A
+    // fractional index plays between the database's frames (MIR frames interpolated): a 60 Hz frame loop on a
+    // 30 fps database steps by 0.5.
+    AdaptedFrame step(double index, Pose& out);
+    AdaptedFrame step(int index, Pose& out) { return step(static_cast<double>(index), out); }
     std::span<const Eigen::Vector3d> positions() const { return m_decoder.model_positions(); }
     std::span<const Eigen::Quaterniond> rotations() const { return m_decoder.model_rotations(); }
 
 private:
-    void frame_mir(int index, MirFrame& out); // step 1: the clip's frame, aligned, blended
+    void frame_mir(double index, MirFrame& out); // step 1: the clip's frame (interpolated), aligned, blended
+    void load_clip_frame(int index, MirFrame& out) const;
     // Decodes; when a pinned support foot is out of its leg's reach, moves the hips towards it just enough and
     // decodes again (so the foot stays down rather than being dragged up). Returns the decodes made.
     int decode(Pose& out, const MirFrame& frame, LimbPins& pins);
@@ -107,6 +111,7 @@ private:
     MirFrame m_current;      // where the character was when the strike began
     MirFrame m_initial_offset; // inertialization: current minus the clip's first frame
     MirFrame m_clip_frame;   // scratch
+    MirFrame m_next_frame;   // scratch: the following frame, for fractional indices
     MirFrame m_frame;        // scratch: the frame being decoded
     Pose m_scratch_pose;
     int m_frame_count = 0;

@@ -1,0 +1,142 @@
+#pragma once
+// The fighter (ARCHITECTURE.md step 7): a character that guards, steps to keep the user in striking range while
+// facing them, strikes on order at the head as it was when the order came (the target is latched), and tells a
+// hit from a miss by where the head is at the contact frame. It owns its workspace and steps at a fixed rate; after
+// construction a step allocates nothing. Several fighters can run side by side, one object each.
+//
+// States: rest (the database's guard clip, looped, re-aimed at the user at each loop) -> approach (one step clip
+// towards the distance band where strikes reach, then rest) -> strike (on order, from rest or approach; orders
+// during a strike or its recovery are ignored and reported) -> recover (blend back into the guard) -> rest. When
+// the tracker has given no head for `tracker_timeout_s` the fighter holds still, after `hold_s` returns to rest,
+// and stays there until a head comes back. Every transition blends in MIR space over `blend_s`.
+//
+// All motion goes through the MIR, so `set_character` switches skeleton at any time, mid-strike included: the
+// strike carries on, decoded on the new character.
+
+#include "kumite/core/strike_adaptation.h"
+
+#include <memory>
+#include <vector>
+
+namespace kumite {
+
+enum class FighterState { rest, approach, strike, recover, hold };
+const char* fighter_state_name(FighterState state);
+
+struct FighterSettings {
+    double rate_hz = 60.0;
+    double hit_radius_m = 0.12;      // a strike hits when the effector is this close to the head at contact
+    double tracker_timeout_s = 0.5;
+    double hold_s = 1.0;
+    double near_legs = 0.55;         // the distance band to the user (horizontal, from the pelvis) where strikes
+    double far_legs = 0.95;          // reach, in the character's leg lengths
+    double blend_s = 0.2;
+    double recover_s = 0.3;
+    double start_x_m = 0.0;          // where the fighter starts on the floor: x, facing +Z (side by side)
+};
+
+struct FighterEvent {
+    enum class Type { order, ignored_order, state, strike, tracker_lost, tracker_back, character };
+    Type type = Type::state;
+    double t_s = 0.0;
+    FighterState state = FighterState::rest; // state events: the new state
+    int semantics = -1;                      // order and strike events
+    Side side = Side::none;
+    int clip = -1;                           // strike events
+    bool hit = false;
+    double contact_error_m = 0.0;            // effector to the latched target at contact
+    double head_distance_m = 0.0;            // effector to the head at contact
+    int character = -1;                      // character events
+    const char* why = "";                    // ignored orders
+};
+const char* fighter_event_name(FighterEvent::Type type);
+
+class Fighter {
+public:
+    // `characters` must outlive the fighter; the first is the starting one.
+    Fighter(const MotionDatabaseView& database, const Retriever& retriever, std::vector<CharacterRig*> characters,
+            FighterSettings settings = {});
+    ~Fighter();
+    Fighter(const Fighter&) = delete;
+    Fighter& operator=(const Fighter&) = delete;
+
+    // An order, taken at the next step. Returns false when it is ignored (already striking or recovering, no head,
+    // or nothing in the database fits); the reason is also an event.
+    bool order(int semantics, Side side);
+    void set_character(int index);
+
+    // One frame at time t (seconds). `head`: the user's head this frame, or null when the tracker has none.
+    void step(double t_s, const Eigen::Vector3d* head);
+
+    FighterState state() const { return m_state; }
+    int character() const { return m_character; }
+    const Pose& pose() const { return m_pose; }              // on the current character
+    const MirFrame& mir() const { return m_mir; }            // the pose in the MIR (to record it on any skeleton)
+    std::span<const Eigen::Vector3d> positions() const;      // model positions of pose()
+    HeadingFrame heading() const { return m_heading; }
+    bool has_latched_target() const { return m_state == FighterState::strike; }
+    const Eigen::Vector3d& latched_target() const { return m_plan.target_world; }
+    int strike_clip() const { return m_plan.clip; }
+
+    std::span<const FighterEvent> events() const { return {m_events.data(), std::size_t(m_event_count)}; }
+    void clear_events() { m_event_count = 0; }
+
+private:
+    struct Body;
+    void emit(const FighterEvent& event);
+    void enter(FighterState state, double t_s);
+    void start_clip(int clip, double t_s, bool face_user);
+    void play_clip(double t_s);
+    void start_strike(double t_s);
+    void play_strike(double t_s);
+    void finish_frame();
+    bool pending_order_fits(const char*& why) const;
+    HeadingFrame heading_towards_user() const;
+    double leg_length() const;
+    double distance_to_user() const; // horizontal, pelvis to head
+
+    MotionDatabaseView m_db;
+    const Retriever& m_retriever;
+    FighterSettings m_settings;
+    std::vector<std::unique_ptr<Body>> m_bodies;
+    int m_character = 0;
+    int m_guard_clip = -1;
+    std::array<int, 4> m_step_clips{-1, -1, -1, -1}; // forward, back, left, right
+
+    FighterState m_state = FighterState::rest;
+    double m_state_since_s = 0.0;
+    double m_now_s = 0.0;
+    bool m_started = false;
+    // the head
+    bool m_have_head = false;
+    bool m_tracking = false;
+    Eigen::Vector3d m_head = Eigen::Vector3d::Zero();
+    double m_last_head_s = -1e9;
+    // orders
+    bool m_pending = false;
+    int m_pending_semantics = -1;
+    Side m_pending_side = Side::none;
+    // the clip being played (rest, approach, recover)
+    int m_clip = -1;
+    double m_clip_start_s = 0.0;
+    FloorAlignment m_clip_to_world;
+    MirFrame m_blend_from;
+    double m_blend_start_s = -1e9;
+    // the strike
+    StrikePlan m_plan;
+    MirFrame m_strike_start;
+    double m_strike_start_s = 0.0;
+    bool m_contact_done = false;
+    int m_strike_semantics = -1;
+    Side m_strike_side = Side::none;
+    // output
+    MirFrame m_clip_frame, m_next_frame, m_mir;
+    Pose m_pose;
+    HeadingFrame m_heading;
+    std::array<float, k_feature_dimensions> m_feature{};
+    RetrievalWorkspace m_workspace;
+    std::array<FighterEvent, 64> m_events;
+    int m_event_count = 0;
+};
+
+} // namespace kumite

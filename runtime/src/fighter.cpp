@@ -1,0 +1,352 @@
+#include "kumite/runtime/fighter.h"
+
+#include "kumite/core/hit_trajectory.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace kumite {
+namespace {
+
+double smoothstep(double s) {
+    s = std::clamp(s, 0.0, 1.0);
+    return s * s * (3.0 - 2.0 * s);
+}
+
+int first_clip_of(const MotionDatabaseView& db, std::string_view semantics) {
+    for (std::size_t c = 0; c < db.clips.size(); ++c) {
+        if (db.string(db.clips[c].semantics) == semantics) return static_cast<int>(c);
+    }
+    return -1;
+}
+
+} // namespace
+
+struct Fighter::Body {
+    CharacterRig* rig;
+    StrikeAdapter adapter;
+    MirDecoder decoder;
+    MirEncoder encoder;
+
+    Body(CharacterRig* character, const MotionDatabaseView& db)
+        : rig(character), adapter(*character, db), decoder(character->skeleton(), character->anatomy(), {}),
+          encoder(character->skeleton(), character->anatomy()) {}
+};
+
+const char* fighter_state_name(FighterState state) {
+    switch (state) {
+    case FighterState::rest: return "rest";
+    case FighterState::approach: return "approach";
+    case FighterState::strike: return "strike";
+    case FighterState::recover: return "recover";
+    case FighterState::hold: return "hold";
+    }
+    return "?";
+}
+
+const char* fighter_event_name(FighterEvent::Type type) {
+    switch (type) {
+    case FighterEvent::Type::order: return "order";
+    case FighterEvent::Type::ignored_order: return "ignored_order";
+    case FighterEvent::Type::state: return "state";
+    case FighterEvent::Type::strike: return "strike";
+    case FighterEvent::Type::tracker_lost: return "tracker_lost";
+    case FighterEvent::Type::tracker_back: return "tracker_back";
+    case FighterEvent::Type::character: return "character";
+    }
+    return "?";
+}
+
+Fighter::Fighter(const MotionDatabaseView& database, const Retriever& retriever, std::vector<CharacterRig*> characters,
+                 FighterSettings settings)
+    : m_db(database), m_retriever(retriever), m_settings(settings), m_workspace(retriever.make_workspace()) {
+    for (CharacterRig* character : characters) m_bodies.push_back(std::make_unique<Body>(character, database));
+    m_guard_clip = first_clip_of(database, "rest");
+    if (m_guard_clip < 0) m_guard_clip = 0; // a database without a guard: its first clip stands in
+    const char* steps[] = {"step_forward", "step_back", "step_left", "step_right"};
+    for (int i = 0; i < 4; ++i) m_step_clips[i] = first_clip_of(database, steps[i]);
+    // Size every buffer the frames reuse, so that step() never allocates.
+    for (auto& body : m_bodies) {
+        body->rig->stand_at_origin(m_pose, database);
+        body->encoder.encode(m_mir, m_pose.view());
+        body->decoder.decode(m_pose, m_mir);
+        body->adapter.begin({first_clip_of(database, "punch") >= 0 ? first_clip_of(database, "punch") : 0, 0, 0, {}, {}}, m_mir,
+                            {true, true}, {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
+    }
+    Body& body = *m_bodies[0];
+    body.rig->stand_at_origin(m_pose, database);
+    body.encoder.encode(m_mir, m_pose.view());
+    m_clip_frame = m_next_frame = m_blend_from = m_strike_start = m_mir;
+    m_heading = body.rig->heading();
+    m_heading.origin.x() += settings.start_x_m;
+}
+
+Fighter::~Fighter() = default;
+
+std::span<const Eigen::Vector3d> Fighter::positions() const { return m_bodies[m_character]->decoder.model_positions(); }
+
+void Fighter::emit(const FighterEvent& event) {
+    if (m_event_count < static_cast<int>(m_events.size())) m_events[m_event_count++] = event;
+}
+
+void Fighter::enter(FighterState state, double t_s) {
+    if (state == m_state && m_started) return;
+    m_state = state;
+    m_state_since_s = t_s;
+    FighterEvent event;
+    event.type = FighterEvent::Type::state;
+    event.t_s = t_s;
+    event.state = state;
+    emit(event);
+}
+
+bool Fighter::order(int semantics, Side side) {
+    FighterEvent event;
+    event.t_s = m_now_s;
+    event.semantics = semantics;
+    event.side = side;
+    const char* why = "";
+    m_pending_semantics = semantics;
+    m_pending_side = side;
+    if (!pending_order_fits(why)) {
+        event.type = FighterEvent::Type::ignored_order;
+        event.why = why;
+        emit(event);
+        return false;
+    }
+    event.type = FighterEvent::Type::order;
+    emit(event);
+    m_pending = true;
+    return true;
+}
+
+bool Fighter::pending_order_fits(const char*& why) const {
+    if (m_state == FighterState::strike || m_state == FighterState::recover || m_pending) {
+        why = "already striking";
+        return false;
+    }
+    if (!m_tracking) {
+        why = "no head to aim at";
+        return false;
+    }
+    if (m_pending_semantics < 0) {
+        why = "the database has no such strike";
+        return false;
+    }
+    return true;
+}
+
+void Fighter::set_character(int index) {
+    if (index < 0 || index >= static_cast<int>(m_bodies.size()) || index == m_character) return;
+    m_character = index;
+    FighterEvent event;
+    event.type = FighterEvent::Type::character;
+    event.t_s = m_now_s;
+    event.character = index;
+    emit(event);
+    if (m_state == FighterState::strike) { // the strike carries on, on the new skeleton
+        Body& body = *m_bodies[m_character];
+        body.decoder.decode(m_pose, m_strike_start);
+        const auto positions = body.decoder.model_positions();
+        const RestAnatomy& anatomy = body.rig->anatomy();
+        body.adapter.begin(m_plan, m_strike_start, {true, true},
+                           {positions[anatomy.limbs[int(Limb::leg_l)].extremity], positions[anatomy.limbs[int(Limb::leg_r)].extremity]});
+    }
+}
+
+double Fighter::leg_length() const { return m_bodies[m_character]->rig->anatomy().leg_length; }
+
+double Fighter::distance_to_user() const {
+    const Eigen::Vector3d to_user = m_head - m_heading.origin;
+    return Eigen::Vector2d(to_user.x(), to_user.z()).norm();
+}
+
+HeadingFrame Fighter::heading_towards_user() const {
+    HeadingFrame heading = m_heading;
+    if (m_tracking) {
+        const Eigen::Vector3d to_user = m_head - heading.origin;
+        if (Eigen::Vector2d(to_user.x(), to_user.z()).norm() > 0.05) heading.yaw_rad = std::atan2(to_user.x(), to_user.z());
+    }
+    return heading;
+}
+
+void Fighter::start_clip(int clip, double t_s, bool face_user) {
+    m_blend_from = m_mir;
+    m_blend_start_s = t_s;
+    m_clip = clip;
+    m_clip_start_s = t_s;
+    const double leg = m_bodies[m_character]->rig->anatomy().leg_length;
+    m_clip_to_world = clip_alignment(m_db, clip, 0, leg, face_user ? heading_towards_user() : m_heading);
+}
+
+void Fighter::play_clip(double t_s) {
+    const DbClip& clip = m_db.clips[m_clip];
+    const double index = std::min((t_s - m_clip_start_s) / m_db.meta.frame_time_s, double(clip.frame_count - 1));
+    const int whole = static_cast<int>(index);
+    const double leg = m_bodies[m_character]->rig->anatomy().leg_length;
+    db_mir_frame_load(m_clip_frame, m_db.mir_frames[clip.first_pose + whole]);
+    if (index - whole > 1e-9) {
+        db_mir_frame_load(m_next_frame, m_db.mir_frames[clip.first_pose + std::min<int>(whole + 1, clip.frame_count - 1)]);
+        mir_frame_blend(m_mir, m_clip_frame, m_next_frame, index - whole);
+        m_clip_frame = m_mir;
+    }
+    mir_frame_move_on_floor(m_clip_frame, m_clip_to_world, leg);
+    const double blend = m_settings.blend_s > 0.0 ? smoothstep((t_s - m_blend_start_s) / m_settings.blend_s) : 1.0;
+    if (blend < 1.0) {
+        mir_frame_blend(m_mir, m_blend_from, m_clip_frame, blend);
+    } else {
+        m_mir = m_clip_frame;
+    }
+    Body& body = *m_bodies[m_character];
+    body.decoder.decode(m_pose, m_mir);
+}
+
+void Fighter::start_strike(double t_s) {
+    m_pending = false;
+    Body& body = *m_bodies[m_character];
+    body.rig->measure(m_pose.view());
+    body.rig->still_feature(m_feature);
+    RetrievalQuery query;
+    query.pose_feature = m_feature;
+    query.heading = body.rig->heading();
+    query.target_world = m_head;
+    query.semantics = m_pending_semantics;
+    query.side = m_pending_side;
+    query.character = body.rig->size();
+    const RetrievalResult found = m_retriever.query(query, m_workspace);
+    if (!found.found) {
+        FighterEvent event;
+        event.type = FighterEvent::Type::ignored_order;
+        event.t_s = t_s;
+        event.semantics = m_pending_semantics;
+        event.side = m_pending_side;
+        event.why = "no strike of that kind can start from here";
+        emit(event);
+        return;
+    }
+    m_plan = {found.clip, found.start_frame, found.contact_frame, found.clip_to_world, m_head};
+    m_strike_start = m_mir;
+    m_strike_start_s = t_s;
+    m_contact_done = false;
+    m_strike_semantics = m_pending_semantics;
+    m_strike_side = m_pending_side;
+    const auto positions = body.decoder.model_positions();
+    const RestAnatomy& anatomy = body.rig->anatomy();
+    body.adapter.begin(m_plan, m_strike_start, {true, true},
+                       {positions[anatomy.limbs[int(Limb::leg_l)].extremity], positions[anatomy.limbs[int(Limb::leg_r)].extremity]});
+    enter(FighterState::strike, t_s);
+}
+
+void Fighter::play_strike(double t_s) {
+    Body& body = *m_bodies[m_character];
+    StrikeAdapter& adapter = body.adapter;
+    // Frames of the database's rate, as a fractional index; the contact frame is played exactly.
+    double index = (t_s - m_strike_start_s) / m_db.meta.frame_time_s;
+    const double contact = adapter.contact_index();
+    if (!m_contact_done && index >= contact - 1e-9) index = contact;
+    index = std::min(index, double(adapter.frame_count() - 1));
+    const AdaptedFrame frame = adapter.step(index, m_pose);
+    if (!m_contact_done && index >= contact) {
+        m_contact_done = true;
+        FighterEvent event;
+        event.type = FighterEvent::Type::strike;
+        event.t_s = t_s;
+        event.semantics = m_strike_semantics;
+        event.side = m_strike_side;
+        event.clip = m_plan.clip;
+        event.contact_error_m = (frame.effector - m_plan.target_world).norm();
+        event.head_distance_m = m_tracking ? (frame.effector - m_head).norm() : 1e9;
+        event.hit = event.head_distance_m <= m_settings.hit_radius_m;
+        emit(event);
+    }
+    body.encoder.encode(m_mir, m_pose.view());
+    if (index >= adapter.frame_count() - 1) {
+        enter(FighterState::recover, t_s);
+        finish_frame();
+        start_clip(m_guard_clip, t_s, false);
+        m_blend_start_s = t_s;
+    }
+}
+
+void Fighter::finish_frame() {
+    Body& body = *m_bodies[m_character];
+    const auto positions = body.decoder.model_positions();
+    m_heading = pose_heading(body.rig->skeleton(), body.rig->anatomy(), positions, body.decoder.model_rotations());
+}
+
+void Fighter::step(double t_s, const Eigen::Vector3d* head) {
+    m_now_s = t_s;
+    if (!m_started) {
+        m_started = true;
+        enter(FighterState::rest, t_s);
+        start_clip(m_guard_clip, t_s, false);
+        m_blend_start_s = -1e9;
+    }
+    // The tracker.
+    if (head) {
+        m_head = *head;
+        m_last_head_s = t_s;
+        if (!m_tracking && m_have_head) {
+            FighterEvent event;
+            event.type = FighterEvent::Type::tracker_back;
+            event.t_s = t_s;
+            emit(event);
+            if (m_state == FighterState::hold) {
+                enter(FighterState::rest, t_s);
+                start_clip(m_guard_clip, t_s, true);
+            }
+        }
+        m_have_head = m_tracking = true;
+    } else if (m_tracking && t_s - m_last_head_s > m_settings.tracker_timeout_s) {
+        m_tracking = false;
+        FighterEvent event;
+        event.type = FighterEvent::Type::tracker_lost;
+        event.t_s = t_s;
+        emit(event);
+        if (m_state == FighterState::rest || m_state == FighterState::approach) enter(FighterState::hold, t_s);
+    }
+
+    if (m_pending && (m_state == FighterState::rest || m_state == FighterState::approach)) start_strike(t_s);
+
+    switch (m_state) {
+    case FighterState::strike:
+        play_strike(t_s);
+        if (m_state == FighterState::strike) finish_frame();
+        return;
+    case FighterState::hold:
+        if (t_s - m_state_since_s >= m_settings.hold_s && m_clip != m_guard_clip) start_clip(m_guard_clip, t_s, false);
+        if (t_s - m_state_since_s < m_settings.hold_s) { // hold the last pose
+            m_bodies[m_character]->decoder.decode(m_pose, m_mir);
+            finish_frame();
+            return;
+        }
+        break;
+    case FighterState::recover:
+        if (t_s - m_state_since_s >= m_settings.recover_s) enter(FighterState::rest, t_s);
+        break;
+    case FighterState::approach:
+    case FighterState::rest: break;
+    }
+
+    const DbClip& clip = m_db.clips[m_clip];
+    const bool clip_over = t_s - m_clip_start_s >= (clip.frame_count - 1) * double(m_db.meta.frame_time_s);
+    // Resting out of range: step without waiting for the guard loop to end.
+    const bool out_of_range = m_state == FighterState::rest && m_tracking && t_s - m_state_since_s >= m_settings.blend_s &&
+                              (distance_to_user() > m_settings.far_legs * leg_length() || distance_to_user() < m_settings.near_legs * leg_length());
+    if (clip_over || out_of_range) {
+        if (m_state == FighterState::approach) enter(FighterState::rest, t_s);
+        // At each loop of the guard: step towards the distance band, or keep guarding, facing the user.
+        int next = m_guard_clip;
+        if (m_state == FighterState::rest && m_tracking) {
+            const double leg = leg_length(), distance = distance_to_user();
+            if (distance > m_settings.far_legs * leg && m_step_clips[0] >= 0) next = m_step_clips[0];
+            else if (distance < m_settings.near_legs * leg && m_step_clips[1] >= 0) next = m_step_clips[1];
+            if (next != m_guard_clip) enter(FighterState::approach, t_s);
+        }
+        start_clip(next, t_s, m_tracking);
+    }
+    play_clip(t_s);
+    finish_frame();
+}
+
+} // namespace kumite
