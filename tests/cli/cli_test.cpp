@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include <fstream>
+#include <sstream>
 
 using kumite::test::run_command;
 
@@ -375,4 +376,49 @@ TEST_CASE("cli: adapt writes a BVH on the character and a report with the contra
 
     CHECK(run_command(kumite_exe() + " adapt " + db + " --character runner --command kick --record " + bvh).status == 2); // no target
     CHECK(run_command(kumite_exe() + " adapt " + db + " --character runner --target 0,1,1 --command kick").status == 2); // no record
+}
+
+TEST_CASE("cli: play runs a headless bout: report keys, events, a recording, the same events twice", "[cli][corpus]") {
+    if (!std::filesystem::exists(kumite::test::mocap_root() / "bandai-namco-1")) return;
+    const std::filesystem::path folder = kumite::test::make_temp_dir("cli-play");
+    const std::string db = (folder / "ref.kdb").string();
+    REQUIRE(run_command(kumite_exe() + " bake " + (kumite::test::source_dir() / "data/annotations/reference.json").string() + " -o " + db +
+                        " --mocap-root " + kumite::test::mocap_root().string()).status == 0);
+    const std::string script = (kumite::test::source_dir() / "data/bouts/demo.txt").string();
+    auto play = [&](const std::string& name) {
+        return run_command(kumite_exe() + " play " + db + " --character brawler --tracker simulate:still --commands script:" + script +
+                           " --headless --duration 12 --seed 5 --events " + (folder / (name + ".jsonl")).string() + " --report " +
+                           (folder / (name + ".json")).string() + " --record " + (folder / (name + ".bvh")).string());
+    };
+    const auto first = play("a");
+    INFO(first.err);
+    REQUIRE(first.status == 0);
+    REQUIRE(play("b").status == 0);
+    CHECK(file_bytes(folder / "a.jsonl") == file_bytes(folder / "b.jsonl"));
+    const nlohmann::json report = nlohmann::json::parse(file_bytes(folder / "a.json"));
+    for (const char* key : {"frames", "frame_time_us", "missed_frames", "orders", "strikes", "hits", "misses", "ignored_orders",
+                            "tracker_packets", "tracker_rejected", "command_to_strike_frames"}) {
+        CHECK(report.contains(key));
+    }
+    CHECK(report["frames"] == 720);
+    CHECK(report["orders"] == 4); // the demo script's orders before 12 s
+    CHECK(report["strikes"] == report["orders"]);
+    CHECK(report["command_to_strike_frames"]["max"].get<double>() <= 1.0);
+    const auto inspect = run_command(kumite_exe() + " inspect " + (folder / "a.bvh").string() + " --json");
+    REQUIRE(inspect.status == 0);
+    CHECK(nlohmann::json::parse(inspect.out)["frames"] == 720);
+    std::size_t strike_lines = 0;
+    std::istringstream lines(file_bytes(folder / "a.jsonl"));
+    for (std::string line; std::getline(lines, line);) {
+        const nlohmann::json event = nlohmann::json::parse(line);
+        CHECK(event.contains("t"));
+        CHECK(event.contains("type"));
+        strike_lines += event["type"] == "strike";
+    }
+    CHECK(strike_lines == report["strikes"].get<std::size_t>());
+
+    CHECK(run_command(kumite_exe() + " play " + db + " --duration 5").status == 2);                           // no --headless yet
+    CHECK(run_command(kumite_exe() + " play " + db + " --headless --tracker simulate:sleepy").status == 2);
+    CHECK(run_command(kumite_exe() + " play " + db + " --headless --tracker dtrack:99999").status == 2);
+    CHECK(run_command(kumite_exe() + " play " + db + " --headless --commands script:/no/such/file").status == 1);
 }

@@ -2,6 +2,7 @@
 // adapting a strike frame by frame (after the adapter's first strike).
 
 #include "kumite/core/strike_adaptation.h"
+#include "kumite/runtime/fighter.h"
 #include "kumite/formats/bvh_reader.h"
 #include "kumite/formats/motion_database_file.h"
 #include "support/allocation_counter.h"
@@ -61,6 +62,26 @@ TEST_CASE("adaptation: begin and step allocate nothing after the first strike", 
     for (const StrikePlan& plan : {first, far}) {
         adapter.begin(plan, standing.mir, {true, true}, standing.ankles);
         for (int i = 0; i < adapter.frame_count(); ++i) adapter.step(i, pose);
+    }
+    CHECK(scope.count() == 0);
+}
+
+TEST_CASE("fighter: a step allocates nothing, through guard, strike, recovery and a character switch", "[core]") {
+    const MotionDatabase database = golden();
+    const kumite::test::StandingCharacter brawler("brawler", database.view());
+    const kumite::test::StandingCharacter giant("giant", database.view());
+    const Retriever retriever(database.view());
+    Fighter fighter(database.view(), retriever, {brawler.rig.get(), giant.rig.get()});
+    const Eigen::Vector3d head(0.0, 1.5, 0.7);
+    fighter.step(0.0, &head); // the first step starts the guard
+    fighter.clear_events();
+    kumite::test::AllocationScope scope;
+    for (int frame = 1; frame < 300; ++frame) {
+        if (frame == 60) fighter.order(retriever.semantics_id("punch"), Side::left);
+        if (frame == 70) fighter.set_character(1);
+        if (frame == 200) fighter.order(retriever.semantics_id("kick"), Side::none);
+        fighter.step(frame / 60.0, frame < 250 ? &head : nullptr);
+        fighter.clear_events();
     }
     CHECK(scope.count() == 0);
 }
