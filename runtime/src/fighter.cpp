@@ -145,12 +145,8 @@ void Fighter::set_character(int index) {
     event.character = index;
     emit(event);
     if (m_state == FighterState::strike) { // the strike carries on, on the new skeleton
-        Body& body = *m_bodies[m_character];
-        body.decoder.decode(m_pose, m_strike_start);
-        const auto positions = body.decoder.model_positions();
-        const RestAnatomy& anatomy = body.rig->anatomy();
-        body.adapter.begin(m_plan, m_strike_start, {true, true},
-                           {positions[anatomy.limbs[int(Limb::leg_l)].extremity], positions[anatomy.limbs[int(Limb::leg_r)].extremity]});
+        m_bodies[m_character]->decoder.decode(m_pose, m_strike_start);
+        begin_strike();
     }
 }
 
@@ -230,11 +226,17 @@ void Fighter::start_strike(double t_s) {
     m_contact_done = false;
     m_strike_semantics = m_pending_semantics;
     m_strike_side = m_pending_side;
+    begin_strike();
+    enter(FighterState::strike, t_s);
+}
+
+void Fighter::begin_strike() {
+    // The feet stay where the last decoded pose (the strike's start) has them.
+    Body& body = *m_bodies[m_character];
     const auto positions = body.decoder.model_positions();
     const RestAnatomy& anatomy = body.rig->anatomy();
     body.adapter.begin(m_plan, m_strike_start, {true, true},
                        {positions[anatomy.limbs[int(Limb::leg_l)].extremity], positions[anatomy.limbs[int(Limb::leg_r)].extremity]});
-    enter(FighterState::strike, t_s);
 }
 
 void Fighter::play_strike(double t_s) {

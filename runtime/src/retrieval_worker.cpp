@@ -4,6 +4,17 @@
 
 namespace kumite {
 
+RetrievalQuery RetrievalRequest::query() const {
+    RetrievalQuery query;
+    query.pose_feature = pose_feature;
+    query.heading = heading;
+    query.target_world = target_world;
+    query.semantics = semantics;
+    query.side = side;
+    query.character = character;
+    return query;
+}
+
 RetrievalWorker::RetrievalWorker(const Retriever& retriever) : m_retriever(retriever), m_thread([this] { run(); }) {}
 
 RetrievalWorker::~RetrievalWorker() {
@@ -33,16 +44,9 @@ void RetrievalWorker::run() {
         if (!m_requests.take()) continue; // superseded requests were folded into the one already answered
         const RetrievalRequest& request = m_requests.current();
         const auto started = std::chrono::steady_clock::now();
-        RetrievalQuery query;
-        query.pose_feature = request.pose_feature;
-        query.heading = request.heading;
-        query.target_world = request.target_world;
-        query.semantics = request.semantics;
-        query.side = request.side;
-        query.character = request.character;
         RetrievalAnswer& answer = m_answers.slot();
         answer.ticket = request.ticket;
-        answer.result = m_retriever.query(query, workspace);
+        answer.result = m_retriever.query(request.query(), workspace);
         answer.latency_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started).count();
         m_answers.publish();
         m_answered.fetch_add(1, std::memory_order_relaxed);

@@ -2,7 +2,7 @@
 // orders are obeyed, the height of the target shows in the chosen strike, the fast path agrees with the
 // exhaustive reference, and concurrent queries on one retriever give the single-threaded answers.
 
-#include "bake.h"
+#include "support/reference_database.h"
 
 #include "kumite/core/character_rig.h"
 #include "kumite/core/retrieval.h"
@@ -19,19 +19,7 @@ using namespace kumite;
 
 namespace {
 
-const MotionDatabaseContent* reference_database() {
-    static const std::optional<MotionDatabaseContent> database = []() -> std::optional<MotionDatabaseContent> {
-        if (!std::filesystem::exists(kumite::test::mocap_root() / "bandai-namco-1")) return std::nullopt;
-        Result<RawAnnotations> annotations = annotations_read_file(kumite::test::source_dir() / "data/annotations/reference.json");
-        REQUIRE(annotations.has_value());
-        bake::BakeOptions options;
-        options.mocap_root = kumite::test::mocap_root();
-        Result<bake::BakeResult> baked = bake::bake_database(*annotations, "reference.json", options);
-        REQUIRE(baked.has_value());
-        return std::move(baked->database);
-    }();
-    return database ? &*database : nullptr;
-}
+using kumite::test::reference_database;
 
 using Standing = kumite::test::StandingCharacter;
 

@@ -2,7 +2,8 @@
 // latching (a still user is hit, a dodging one missed), tracker loss and recovery, a character switch
 // mid-strike, and a bout with a fixed seed giving the same events twice.
 
-#include "bake.h"
+#include "support/reference_database.h"
+#include "support/standing_character.h"
 
 #include "kumite/runtime/fighter.h"
 #include "kumite/runtime/simulated_user.h"
@@ -15,44 +16,17 @@ using namespace kumite;
 
 namespace {
 
-const MotionDatabaseContent* reference() {
-    static const std::optional<MotionDatabaseContent> database = []() -> std::optional<MotionDatabaseContent> {
-        if (!std::filesystem::exists(kumite::test::mocap_root() / "bandai-namco-1")) return std::nullopt;
-        Result<RawAnnotations> annotations = annotations_read_file(kumite::test::source_dir() / "data/annotations/reference.json");
-        REQUIRE(annotations.has_value());
-        bake::BakeOptions options;
-        options.mocap_root = kumite::test::mocap_root();
-        Result<bake::BakeResult> baked = bake::bake_database(*annotations, "reference.json", options);
-        REQUIRE(baked.has_value());
-        return std::move(baked->database);
-    }();
-    return database ? &*database : nullptr;
-}
-
-struct Character {
-    BvhFile file;
-    RestAnatomy anatomy;
-    std::unique_ptr<CharacterRig> rig;
-    explicit Character(const std::string& name) {
-        Result<BvhFile> read = bvh_read_file(kumite::test::source_dir() / "data/characters" / (name + ".bvh"));
-        REQUIRE(read.has_value());
-        file = std::move(*read);
-        Result<RestAnatomy> built = rest_anatomy_build(file.clip, file.body_map);
-        REQUIRE(built.has_value());
-        anatomy = std::move(*built);
-        rig = std::make_unique<CharacterRig>(file.clip.skeleton, anatomy);
-    }
-};
+using kumite::test::reference_database;
 
 struct Bout {
     MotionDatabaseView db;
     RetrievalSettings settings;
     std::unique_ptr<Retriever> retriever;
-    Character brawler{"brawler"}, giant{"giant"};
+    kumite::test::StandingCharacter brawler, giant;
     std::unique_ptr<Fighter> fighter;
     std::vector<FighterEvent> events;
 
-    explicit Bout(const MotionDatabaseView& database) : db(database) {
+    explicit Bout(const MotionDatabaseView& database) : db(database), brawler("brawler", database), giant("giant", database) {
         settings.min_lead_frames = 12; // 0.4 s, as kumite play
         retriever = std::make_unique<Retriever>(db, settings);
         fighter = std::make_unique<Fighter>(db, *retriever, std::vector<CharacterRig*>{brawler.rig.get(), giant.rig.get()});
@@ -99,7 +73,7 @@ std::vector<FighterEvent> bout(const MotionDatabaseView& db, SimulatedKind kind,
 } // namespace
 
 TEST_CASE("fighter: a still user is hit, a dodging one missed, every order strikes", "[runtime][corpus]") {
-    const MotionDatabaseContent* content = reference();
+    const MotionDatabaseContent* content = reference_database();
     if (!content) return;
     for (SimulatedKind kind : {SimulatedKind::still, SimulatedKind::dodge}) {
         const std::vector<FighterEvent> events = bout(content->view(), kind, 7);
@@ -120,7 +94,7 @@ TEST_CASE("fighter: a still user is hit, a dodging one missed, every order strik
 }
 
 TEST_CASE("fighter: the same bout with the same seed gives the same events", "[runtime][corpus]") {
-    const MotionDatabaseContent* content = reference();
+    const MotionDatabaseContent* content = reference_database();
     if (!content) return;
     const std::vector<FighterEvent> first = bout(content->view(), SimulatedKind::wander, 3);
     const std::vector<FighterEvent> second = bout(content->view(), SimulatedKind::wander, 3);
@@ -135,7 +109,7 @@ TEST_CASE("fighter: the same bout with the same seed gives the same events", "[r
 }
 
 TEST_CASE("fighter: approach, strike, ignored orders, recovery and rest", "[runtime][corpus]") {
-    const MotionDatabaseContent* content = reference();
+    const MotionDatabaseContent* content = reference_database();
     if (!content) return;
     Bout b(content->view());
     const Eigen::Vector3d far_user(0.0, 1.65, 2.5);
@@ -160,7 +134,7 @@ TEST_CASE("fighter: approach, strike, ignored orders, recovery and rest", "[runt
 }
 
 TEST_CASE("fighter: a silent tracker makes it hold, then rest; the head coming back resumes", "[runtime][corpus]") {
-    const MotionDatabaseContent* content = reference();
+    const MotionDatabaseContent* content = reference_database();
     if (!content) return;
     Bout b(content->view());
     const Eigen::Vector3d user(0.0, 1.65, 1.0);
@@ -176,7 +150,7 @@ TEST_CASE("fighter: a silent tracker makes it hold, then rest; the head coming b
 }
 
 TEST_CASE("fighter: switching character mid-strike carries the strike on, on the new skeleton", "[runtime][corpus]") {
-    const MotionDatabaseContent* content = reference();
+    const MotionDatabaseContent* content = reference_database();
     if (!content) return;
     Bout b(content->view());
     const Eigen::Vector3d user(0.0, 1.6, 0.9);
@@ -188,5 +162,5 @@ TEST_CASE("fighter: switching character mid-strike carries the strike on, on the
     b.run(250, 400, [&](double) { return std::optional(user); });
     CHECK(b.count(FighterEvent::Type::character) == 1);
     CHECK(b.count(FighterEvent::Type::strike) == 1);
-    CHECK(b.fighter->pose().local_rotations.size() == std::size_t(b.giant.file.clip.skeleton.joint_count()));
+    CHECK(b.fighter->pose().local_rotations.size() == std::size_t(b.giant.skeleton().joint_count()));
 }

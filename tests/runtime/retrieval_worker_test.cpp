@@ -52,15 +52,8 @@ struct Fixture {
     }
 
     RetrievalResult direct(const Retriever& retriever, const RetrievalRequest& request) const {
-        RetrievalQuery query;
-        query.pose_feature = request.pose_feature;
-        query.heading = request.heading;
-        query.target_world = request.target_world;
-        query.semantics = request.semantics;
-        query.side = request.side;
-        query.character = request.character;
         RetrievalWorkspace workspace = retriever.make_workspace();
-        return retriever.query(query, workspace);
+        return retriever.query(request.query(), workspace);
     }
 };
 

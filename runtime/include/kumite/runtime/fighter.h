@@ -88,6 +88,7 @@ private:
     void start_clip(int clip, double t_s, bool face_user);
     void play_clip(double t_s);
     void start_strike(double t_s);
+    void begin_strike(); // the current body's adapter on m_plan, from m_strike_start
     void play_strike(double t_s);
     void finish_frame();
     bool pending_order_fits(const char*& why) const;

@@ -20,6 +20,8 @@ struct RetrievalRequest {
     int semantics = -1;
     Side side = Side::none;
     CharacterSize character;
+
+    RetrievalQuery query() const; // a view of this request (its feature stays here)
 };
 
 struct RetrievalAnswer {
