@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The main job, from a fresh machine: install what is missing, fetch the captures, build, and show what
-# kumite reads from the reference kick capture.
+# The main job, from a fresh machine: install what is missing, fetch the captures, build, then show what kumite
+# reads from the reference kick capture, retarget it, bake the reference database, retrieve and adapt a strike,
+# and run a 30 s headless bout (the viewer arrives with the player issue).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/setup.sh"
@@ -22,3 +23,18 @@ for character in kid scout brawler runner giant; do
   build/bin/kumite retarget "$capture" --character "$character" -o "build/demo/kick_$character.bvh" \
     --report "build/demo/kick_$character.json"
 done
+echo
+echo "== kumite bake: the reference annotations into build/demo/ref.kdb"
+build/bin/kumite bake data/annotations/reference.json -o build/demo/ref.kdb
+build/bin/kumite db-info build/demo/ref.kdb --verify
+echo
+echo "== kumite query and adapt: a left punch at a giant's head height"
+build/bin/kumite query build/demo/ref.kdb --character giant --target 0.1,1.7,0.6 --command punch --side left
+build/bin/kumite adapt build/demo/ref.kdb --character giant --target 0.1,1.7,0.6 --command punch --side left \
+  --record build/demo/giant_punch.bvh --report build/demo/giant_punch.json
+echo
+echo "== kumite play: a 30 s headless bout against a simulated user standing still (events in build/demo/)"
+build/bin/kumite play build/demo/ref.kdb --character brawler --tracker simulate:still --headless --duration 30 \
+  --commands script:data/bouts/demo.txt --events build/demo/bout.jsonl --record build/demo/bout.bvh \
+  --report build/demo/bout.json
+cat build/demo/bout.json
