@@ -11,7 +11,9 @@
 #include "kumite/formats/motion_database_file.h"
 #include "kumite/runtime/dtrack_receiver.h"
 #include "kumite/runtime/fighter.h"
+#include "kumite/runtime/replay_track.h"
 #include "kumite/runtime/simulated_user.h"
+#include "kumite/runtime/supervisor.h"
 
 #include <algorithm>
 #include <chrono>
@@ -25,19 +27,20 @@ namespace kumite::cli {
 const CommandSpec& play_spec() {
     static const CommandSpec spec{
         "play",
-        "DB.kdb [--character NAME] [--fighters N] [--tracker dtrack:PORT[:BODY] | simulate:still|wander|dodge] "
-        "[--commands script:FILE] --headless [--duration S] [--realtime] [--seed N] [--record OUT.bvh] [--events OUT.jsonl] "
-        "[--report OUT.json]",
-        "Runs the fighter at 60 Hz against the user's head (a DTrack system, or a simulated user) and the\n"
-        "supervisor's commands, one per line as '<time_s> <command>' in a script: punch [left|right],\n"
-        "kick [left|right], character NAME, quit. Headless runs use a simulated clock unless --realtime or the\n"
-        "tracker is live. (The viewer, stdin/TCP commands and replay files arrive later.)",
+        "DB.kdb [--character NAME] [--fighters N] [--tracker dtrack:PORT[:BODY] | replay:FILE | simulate:still|wander|dodge] "
+        "[--commands stdin | tcp:PORT | script:FILE] --headless [--duration S] [--realtime] [--seed N] [--record OUT.bvh] "
+        "[--events OUT.jsonl] [--report OUT.json]",
+        "Runs the fighter at 60 Hz against the user's head (a DTrack system, a replayed CSV of t,x,y,z, or a\n"
+        "simulated user) and the supervisor's commands, one per line: punch [left|right], kick [left|right],\n"
+        "character NAME, quit (in a script file, each line starts with its time in seconds; on stdin or TCP on\n"
+        "127.0.0.1 they apply when they arrive). Headless runs use a simulated clock unless --realtime or the\n"
+        "tracker is live. (The viewer arrives later.)",
         1, 1,
         {{"character", "NAME", "the starting character (default: the first of data/characters)"},
          {"fighters", "N", "fighters side by side against the same user (default 1)"},
-         {"tracker", "SOURCE", "dtrack:PORT[:BODY] or simulate:still|wander|dodge (default simulate:still)"},
+         {"tracker", "SOURCE", "dtrack:PORT[:BODY], replay:FILE.csv or simulate:still|wander|dodge (default simulate:still)"},
          {"tracker-config", "FILE.json", "the room: bind address, room-to-world transform, room bounds (dtrack)"},
-         {"commands", "script:FILE", "supervisor commands, '<time_s> <command>' per line"},
+         {"commands", "SOURCE", "stdin, tcp:PORT (127.0.0.1) or script:FILE ('<time_s> <command>' per line)"},
          {"headless", "", "no window"},
          {"duration", "S", "seconds to run (default 30)"},
          {"realtime", "", "step on the wall clock"},
@@ -117,6 +120,7 @@ int run_play(int argc, char** argv) {
     // The tracker.
     const std::string tracker = arguments.value("tracker").value_or("simulate:still");
     std::optional<SimulatedUser> simulated;
+    std::optional<ReplayTrack> replay;
     std::unique_ptr<DtrackReceiver> receiver;
     if (tracker.starts_with("simulate:")) {
         const std::optional<SimulatedKind> kind = simulated_kind_from_name(tracker.substr(9));
@@ -138,15 +142,28 @@ int run_play(int argc, char** argv) {
         Result<std::unique_ptr<DtrackReceiver>> opened = DtrackReceiver::open(config);
         if (!opened) return input_error(opened.error().message);
         receiver = std::move(*opened);
+    } else if (tracker.starts_with("replay:")) {
+        Result<ReplayTrack> read = ReplayTrack::read(tracker.substr(7));
+        if (!read) return input_error(read.error().message);
+        replay = std::move(*read);
     } else {
-        return usage_error(play_spec(), "--tracker must be dtrack:PORT[:BODY] or simulate:still|wander|dodge (replay files arrive later)");
+        return usage_error(play_spec(), "--tracker must be dtrack:PORT[:BODY], replay:FILE or simulate:still|wander|dodge");
     }
     std::vector<ScriptLine> script;
+    std::unique_ptr<CommandStream> stream;
     if (const std::optional<std::string> commands = arguments.value("commands")) {
-        if (!commands->starts_with("script:")) return usage_error(play_spec(), "--commands takes script:FILE for now (stdin and tcp arrive later)");
-        Result<std::vector<ScriptLine>> read = read_script(commands->substr(7));
-        if (!read) return input_error(read.error().message);
-        script = std::move(*read);
+        if (commands->starts_with("script:")) {
+            Result<std::vector<ScriptLine>> read = read_script(commands->substr(7));
+            if (!read) return input_error(read.error().message);
+            script = std::move(*read);
+        } else if (*commands == "stdin" || commands->starts_with("tcp:")) {
+            Result<std::unique_ptr<CommandStream>> opened = CommandStream::open(*commands);
+            if (!opened) return usage_error(play_spec(), opened.error().message);
+            stream = std::move(*opened);
+            if (stream->port() > 0) std::cerr << "kumite play: supervisor commands on 127.0.0.1:" << stream->port() << "\n";
+        } else {
+            return usage_error(play_spec(), "--commands takes stdin, tcp:PORT or script:FILE, not '" + *commands + "'");
+        }
     }
 
     // The database and every character (any of them can be switched to).
@@ -238,6 +255,11 @@ int run_play(int argc, char** argv) {
         if (simulated) {
             head = simulated->head(t);
             head_now = &head;
+        } else if (replay) {
+            if (const std::optional<Eigen::Vector3d> replayed = replay->head(t)) {
+                head = *replayed;
+                head_now = &head;
+            }
         } else if (receiver) {
             if (receiver->poll(head_sample, t)) have_head = true;
             if (have_head) {
@@ -245,29 +267,38 @@ int run_play(int argc, char** argv) {
                 head_now = &head;
             }
         }
-        // Commands due.
+        // Commands due: from the script, or whatever arrived on the stream.
         bool quit = false;
-        for (; next_command < script.size() && script[next_command].t_s <= t; ++next_command) {
-            std::istringstream words(script[next_command].command);
-            std::string verb, argument;
-            words >> verb >> argument;
-            if (verb == "punch" || verb == "kick") {
-                const Side side = argument == "left" ? Side::left : argument == "right" ? Side::right : Side::none;
-                if (!argument.empty() && side == Side::none) {
-                    std::cerr << "kumite play: line " << script[next_command].line << ": '" << argument << "' is not left or right; ignored\n";
-                    continue;
-                }
-                if (simulated) simulated->on_order(t);
-                for (auto& fighter : fighters) fighter->order(retriever.semantics_id(verb), side);
-            } else if (verb == "character" && rig_index(argument) >= 0) {
-                for (auto& fighter : fighters) fighter->set_character(rig_index(argument));
-            } else if (verb == "quit") {
-                quit = true;
-            } else {
-                std::cerr << "kumite play: line " << script[next_command].line << ": unknown command '" << script[next_command].command
-                          << "'; ignored\n";
+        auto apply = [&](std::string_view line, const std::string& where) {
+            Result<SupervisorCommand> command = supervisor_command_parse(line);
+            if (command && command->verb == SupervisorCommand::Verb::character && rig_index(command->argument) < 0) {
+                command = make_error(ErrorCode::invalid, "unknown character '" + command->argument + "'");
             }
+            if (!command) {
+                const std::string message = "error: " + where + command.error().message + "; ignored\n";
+                if (stream) stream->reply(message);
+                else std::cerr << "kumite play: " << message;
+                return;
+            }
+            switch (command->verb) {
+            case SupervisorCommand::Verb::punch:
+            case SupervisorCommand::Verb::kick: {
+                const Side side = command->side == "left" ? Side::left : command->side == "right" ? Side::right : Side::none;
+                if (simulated) simulated->on_order(t);
+                const char* verb = command->verb == SupervisorCommand::Verb::punch ? "punch" : "kick";
+                for (auto& fighter : fighters) fighter->order(retriever.semantics_id(verb), side);
+                break;
+            }
+            case SupervisorCommand::Verb::character:
+                for (auto& fighter : fighters) fighter->set_character(rig_index(command->argument));
+                break;
+            case SupervisorCommand::Verb::quit: quit = true; break;
+            }
+        };
+        for (; next_command < script.size() && script[next_command].t_s <= t; ++next_command) {
+            apply(script[next_command].command, "line " + std::to_string(script[next_command].line) + ": ");
         }
+        if (stream) stream->poll([&](std::string_view line) { apply(line, ""); });
         for (std::size_t f = 0; f < fighters.size(); ++f) {
             Fighter& fighter = *fighters[f];
             fighter.step(t, head_now);

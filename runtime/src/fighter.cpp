@@ -125,10 +125,6 @@ bool Fighter::pending_order_fits(const char*& why) const {
         why = "already striking";
         return false;
     }
-    if (!m_tracking) {
-        why = "no head to aim at";
-        return false;
-    }
     if (m_pending_semantics < 0) {
         why = "the database has no such strike";
         return false;
@@ -308,6 +304,16 @@ void Fighter::step(double t_s, const Eigen::Vector3d* head) {
         if (m_state == FighterState::rest || m_state == FighterState::approach) enter(FighterState::hold, t_s);
     }
 
+    if (m_pending && !m_tracking) { // the order came while the tracker has no head: nothing to aim at
+        m_pending = false;
+        FighterEvent event;
+        event.type = FighterEvent::Type::ignored_order;
+        event.t_s = t_s;
+        event.semantics = m_pending_semantics;
+        event.side = m_pending_side;
+        event.why = "no head to aim at";
+        emit(event);
+    }
     if (m_pending && (m_state == FighterState::rest || m_state == FighterState::approach)) start_strike(t_s);
 
     switch (m_state) {

@@ -142,8 +142,11 @@ TEST_CASE("fighter: a silent tracker makes it hold, then rest; the head coming b
     b.run(60, 300, [&](double) { return std::optional<Eigen::Vector3d>(); }); // 4 s of silence
     CHECK(b.count(FighterEvent::Type::tracker_lost) == 1);
     CHECK(b.entered(FighterState::hold));
-    CHECK_FALSE(b.fighter->order(b.retriever->semantics_id("punch"), Side::none)); // nothing to aim at
-    b.run(300, 360, [&](double) { return std::optional(user); });
+    b.fighter->order(b.retriever->semantics_id("punch"), Side::none); // nothing to aim at: ignored at the next step
+    b.run(300, 301, [&](double) { return std::optional<Eigen::Vector3d>(); });
+    CHECK(b.count(FighterEvent::Type::ignored_order) == 1);
+    CHECK(b.count(FighterEvent::Type::strike) == 0);
+    b.run(301, 360, [&](double) { return std::optional(user); });
     CHECK(b.count(FighterEvent::Type::tracker_back) == 1);
     CHECK(b.fighter->state() != FighterState::hold);
     CHECK(b.fighter->order(b.retriever->semantics_id("punch"), Side::none));

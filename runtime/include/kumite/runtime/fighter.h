@@ -60,8 +60,9 @@ public:
     Fighter(const Fighter&) = delete;
     Fighter& operator=(const Fighter&) = delete;
 
-    // An order, taken at the next step. Returns false when it is ignored (already striking or recovering, no head,
-    // or nothing in the database fits); the reason is also an event.
+    // An order, taken at the next step. Returns false when it is ignored at once (already striking or recovering,
+    // or a semantics the database lacks); the reason is also an event. An order the next step cannot carry out
+    // (the tracker has no head, nothing fits) is ignored then, with an event.
     bool order(int semantics, Side side);
     void set_character(int index);
 

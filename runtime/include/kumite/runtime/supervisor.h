@@ -1,0 +1,53 @@
+#pragma once
+// Supervisor commands, one per line: `punch [left|right]`, `kick [left|right]`, `character NAME`, `quit`. They come
+// from a script file (`<time_s> <command>` lines), stdin, or a TCP connection on 127.0.0.1 (the port is opt-in).
+// Streams are read without blocking from the frame loop; an unknown line is answered with an error line (on stdout
+// for stdin, on the connection for TCP) and ignored.
+
+#include "kumite/core/result.h"
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace kumite {
+
+struct SupervisorCommand {
+    enum class Verb { punch, kick, character, quit } verb = Verb::punch;
+    std::string side;      // "", "left" or "right" for strikes
+    std::string argument;  // the character's name
+};
+
+// Parses one line; an error says what is wrong with it.
+Result<SupervisorCommand> supervisor_command_parse(std::string_view line);
+
+class CommandStream {
+public:
+    // "stdin" or "tcp:PORT" (listens on 127.0.0.1:PORT; port 0 picks a free one).
+    static Result<std::unique_ptr<CommandStream>> open(std::string_view source);
+    ~CommandStream();
+    CommandStream(const CommandStream&) = delete;
+    CommandStream& operator=(const CommandStream&) = delete;
+
+    // Reads what has arrived and calls `on_line` for each complete line. Never blocks.
+    void poll(const std::function<void(std::string_view line)>& on_line);
+    // Answers the source (stdout, or the TCP client).
+    void reply(std::string_view text);
+    int port() const { return m_port; }
+
+private:
+    CommandStream() = default;
+    void drain(int fd, const std::function<void(std::string_view)>& on_line);
+
+    int m_listen = -1;  // TCP: the listening socket
+    int m_client = -1;  // TCP: the connected supervisor; stdin: 0
+    int m_port = 0;
+    bool m_stdin = false;
+    std::array<char, 4096> m_line{};
+    std::size_t m_length = 0;
+    bool m_overlong = false;
+};
+
+} // namespace kumite

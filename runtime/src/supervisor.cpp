@@ -1,0 +1,132 @@
+#include "kumite/runtime/supervisor.h"
+
+#include <arpa/inet.h>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+namespace kumite {
+
+Result<SupervisorCommand> supervisor_command_parse(std::string_view line) {
+    auto next_word = [&line]() {
+        const std::size_t start = line.find_first_not_of(" \t\r");
+        if (start == std::string_view::npos) {
+            line = {};
+            return std::string_view();
+        }
+        line.remove_prefix(start);
+        const std::size_t end = std::min(line.find_first_of(" \t\r"), line.size());
+        const std::string_view word = line.substr(0, end);
+        line.remove_prefix(end);
+        return word;
+    };
+    const std::string_view verb = next_word();
+    const std::string_view argument = next_word();
+    const std::string_view extra = next_word();
+    SupervisorCommand command;
+    if (!extra.empty()) return make_error(ErrorCode::invalid, "too many words");
+    if (verb == "punch" || verb == "kick") {
+        command.verb = verb == "punch" ? SupervisorCommand::Verb::punch : SupervisorCommand::Verb::kick;
+        if (!argument.empty() && argument != "left" && argument != "right") {
+            return make_error(ErrorCode::invalid, "the side must be left or right, not '" + std::string(argument) + "'");
+        }
+        command.side = argument;
+    } else if (verb == "character") {
+        if (argument.empty()) return make_error(ErrorCode::invalid, "character needs a NAME");
+        command.verb = SupervisorCommand::Verb::character;
+        command.argument = argument;
+    } else if (verb == "quit") {
+        if (!argument.empty()) return make_error(ErrorCode::invalid, "quit takes nothing");
+        command.verb = SupervisorCommand::Verb::quit;
+    } else {
+        return make_error(ErrorCode::invalid, "unknown command '" + std::string(verb) + "' (punch, kick, character, quit)");
+    }
+    return command;
+}
+
+Result<std::unique_ptr<CommandStream>> CommandStream::open(std::string_view source) {
+    std::unique_ptr<CommandStream> stream(new CommandStream());
+    if (source == "stdin") {
+        stream->m_stdin = true;
+        stream->m_client = 0;
+        fcntl(0, F_SETFL, fcntl(0, F_GETFL) | O_NONBLOCK);
+        return stream;
+    }
+    if (!source.starts_with("tcp:")) return make_error(ErrorCode::invalid, "commands come from stdin or tcp:PORT, not '" + std::string(source) + "'");
+    char* end = nullptr;
+    const std::string port_text(source.substr(4));
+    const long port = std::strtol(port_text.c_str(), &end, 10);
+    if (port_text.empty() || *end != '\0' || port < 0 || port > 65535) return make_error(ErrorCode::invalid, "tcp:PORT needs a port number");
+    stream->m_listen = socket(AF_INET, SOCK_STREAM | SOCK_NONBLOCK | SOCK_CLOEXEC, 0);
+    if (stream->m_listen < 0) return make_error(ErrorCode::io, "cannot create a TCP socket: " + std::string(std::strerror(errno)));
+    const int yes = 1;
+    setsockopt(stream->m_listen, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_port = htons(static_cast<std::uint16_t>(port));
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK); // the supervisor's console is on this machine
+    if (bind(stream->m_listen, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 || listen(stream->m_listen, 1) != 0) {
+        return make_error(ErrorCode::io, "tcp:" + port_text + ": cannot listen on 127.0.0.1: " + std::strerror(errno));
+    }
+    socklen_t length = sizeof address;
+    getsockname(stream->m_listen, reinterpret_cast<sockaddr*>(&address), &length);
+    stream->m_port = ntohs(address.sin_port);
+    return stream;
+}
+
+CommandStream::~CommandStream() {
+    if (m_client > 0) close(m_client);
+    if (m_listen >= 0) close(m_listen);
+}
+
+void CommandStream::drain(int fd, const std::function<void(std::string_view)>& on_line) {
+    char buffer[1024];
+    while (true) {
+        const ssize_t size = read(fd, buffer, sizeof buffer);
+        if (size == 0 && !m_stdin) { // the supervisor hung up: wait for the next one
+            close(m_client);
+            m_client = -1;
+            m_length = 0;
+            return;
+        }
+        if (size <= 0) return;
+        for (ssize_t i = 0; i < size; ++i) {
+            const char c = buffer[i];
+            if (c == '\n') {
+                if (!m_overlong) on_line(std::string_view(m_line.data(), m_length));
+                else reply("error: line too long\n");
+                m_length = 0;
+                m_overlong = false;
+            } else if (m_length < m_line.size()) {
+                m_line[m_length++] = c;
+            } else {
+                m_overlong = true;
+            }
+        }
+    }
+}
+
+void CommandStream::poll(const std::function<void(std::string_view)>& on_line) {
+    if (m_stdin) return drain(0, on_line);
+    if (m_client < 0) {
+        m_client = accept4(m_listen, nullptr, nullptr, SOCK_NONBLOCK | SOCK_CLOEXEC);
+        if (m_client < 0) return;
+    }
+    drain(m_client, on_line);
+}
+
+void CommandStream::reply(std::string_view text) {
+    if (m_stdin) {
+        std::fwrite(text.data(), 1, text.size(), stdout);
+        std::fflush(stdout);
+    } else if (m_client >= 0) {
+        const ssize_t ignored = send(m_client, text.data(), text.size(), MSG_NOSIGNAL | MSG_DONTWAIT);
+        (void)ignored;
+    }
+}
+
+} // namespace kumite
