@@ -242,7 +242,6 @@ int run_play(int argc, char** argv) {
     std::vector<long long> order_frame(fighters.size(), -1);
     std::size_t next_command = 0;
     HeadSample head_sample;
-    bool have_head = false;
     const auto wall_start = std::chrono::steady_clock::now();
     long long frame = 0;
     for (; frame < frames; ++frame) {
@@ -260,12 +259,9 @@ int run_play(int argc, char** argv) {
                 head = *replayed;
                 head_now = &head;
             }
-        } else if (receiver) {
-            if (receiver->poll(head_sample, t)) have_head = true;
-            if (have_head) {
-                head = head_sample.position_world;
-                head_now = &head;
-            }
+        } else if (receiver && receiver->poll(head_sample, t)) { // only a fresh head: silence must reach the fighter
+            head = head_sample.position_world;
+            head_now = &head;
         }
         // Commands due: from the script, or whatever arrived on the stream.
         bool quit = false;
@@ -331,6 +327,8 @@ int run_play(int argc, char** argv) {
                     line["clip"] = db.string(db.clips[event.clip].name);
                     break;
                 case FighterEvent::Type::character: line["character"] = entries[(start_character + event.character) % entries.size()].name; break;
+                case FighterEvent::Type::tracker_lost:
+                case FighterEvent::Type::tracker_back: break;
                 default: break;
                 }
                 write_event(line);
