@@ -324,6 +324,7 @@ int run_play(int argc, char** argv) {
                     line["result"] = event.hit ? "hit" : "miss";
                     line["contact_error_m"] = event.contact_error_m;
                     line["head_distance_m"] = event.head_distance_m;
+                    line["range_m"] = event.range_m;
                     line["clip"] = db.string(db.clips[event.clip].name);
                     break;
                 case FighterEvent::Type::character: line["character"] = entries[(start_character + event.character) % entries.size()].name; break;

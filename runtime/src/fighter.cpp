@@ -222,6 +222,7 @@ void Fighter::start_strike(double t_s) {
     m_contact_done = false;
     m_strike_semantics = m_pending_semantics;
     m_strike_side = m_pending_side;
+    m_strike_range_m = distance_to_user();
     begin_strike();
     enter(FighterState::strike, t_s);
 }
@@ -255,6 +256,7 @@ void Fighter::play_strike(double t_s) {
         event.contact_error_m = (frame.effector - m_plan.target_world).norm();
         event.head_distance_m = m_tracking ? (frame.effector - m_head).norm() : 1e9;
         event.hit = event.head_distance_m <= m_settings.hit_radius_m;
+        event.range_m = m_strike_range_m;
         emit(event);
     }
     body.encoder.encode(m_mir, m_pose.view());

@@ -28,8 +28,9 @@ struct FighterSettings {
     double hit_radius_m = 0.12;      // a strike hits when the effector is this close to the head at contact
     double tracker_timeout_s = 0.5;
     double hold_s = 1.0;
-    double near_legs = 0.55;         // the distance band to the user (horizontal, from the pelvis) where strikes
-    double far_legs = 0.95;          // reach, in the character's leg lengths
+    double near_legs = 0.35;         // the distance band to the user (horizontal, from the pelvis) where strikes
+    double far_legs = 1.05;          // reach, in leg lengths; wider than one step clip (~0.65 legs), or stepping
+                                     // in overshoots out the other side and the fighter oscillates
     double blend_s = 0.2;
     double recover_s = 0.3;
     double start_x_m = 0.0;          // where the fighter starts on the floor: x, facing +Z (side by side)
@@ -46,6 +47,7 @@ struct FighterEvent {
     bool hit = false;
     double contact_error_m = 0.0;            // effector to the latched target at contact
     double head_distance_m = 0.0;            // effector to the head at contact
+    double range_m = 0.0;                    // strike events: pelvis to head on the floor when the strike began
     int character = -1;                      // character events
     const char* why = "";                    // ignored orders
 };
@@ -131,6 +133,7 @@ private:
     bool m_contact_done = false;
     int m_strike_semantics = -1;
     Side m_strike_side = Side::none;
+    double m_strike_range_m = 0.0;
     // output
     MirFrame m_clip_frame, m_next_frame, m_mir;
     Pose m_pose;
