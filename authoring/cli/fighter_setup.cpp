@@ -13,6 +13,9 @@ Result<Eigen::Vector3d> parse_point(const std::string& text, const std::string& 
     if (std::sscanf(text.c_str(), " %lf , %lf , %lf %c", &point.x(), &point.y(), &point.z(), &extra) != 3 || !point.allFinite()) {
         return make_error(ErrorCode::invalid, where + ": expected X,Y,Z in metres, not '" + text + "'");
     }
+    if (point.cwiseAbs().maxCoeff() > 1000.0) { // a room is metres wide; this is a typo or a wrong unit
+        return make_error(ErrorCode::invalid, where + ": " + text + " is more than 1 km away (metres expected)");
+    }
     return point;
 }
 

@@ -331,6 +331,7 @@ TEST_CASE("cli: query refuses what it cannot answer, saying why", "[cli][corpus]
     CHECK(run_command(base + "--target 0,1,1 --targets x.csv --command punch").status == 2);          // both
     CHECK(run_command(base + "--target 0,1 --command punch").status == 2);                            // two numbers
     CHECK(run_command(base + "--target 0,nan,1 --command punch").status == 2);
+    CHECK(run_command(base + "--target 1e300,0,0 --command punch").status == 2);           // not metres
     CHECK(run_command(base + "--target 0,1,1 --command punch --side up").status == 2);
     CHECK(run_command(kumite_exe() + " query " + db + " --character nobody --target 0,1,1 --command punch").status == 2);
     const auto unknown = run_command(base + "--target 0,1,1 --command headbutt");
