@@ -27,7 +27,7 @@ namespace kumite::cli {
 const CommandSpec& play_spec() {
     static const CommandSpec spec{
         "play",
-        "DB.kdb [--character NAME] [--fighters N] [--tracker dtrack:PORT[:BODY] | replay:FILE | simulate:still|wander|dodge] "
+        "DB.kdb [--character NAME] [--fighters N] [--tracker dtrack:PORT[:BODY] | replay:FILE | simulate:still|wander|dodge|FILE] "
         "[--commands stdin | tcp:PORT | script:FILE] --headless [--duration S] [--realtime] [--seed N] [--record OUT.bvh] "
         "[--events OUT.jsonl] [--report OUT.json]",
         "Runs the fighter at 60 Hz against the user's head (a DTrack system, a replayed CSV of t,x,y,z, or a\n"
@@ -38,7 +38,7 @@ const CommandSpec& play_spec() {
         1, 1,
         {{"character", "NAME", "the starting character (default: the first of data/characters)"},
          {"fighters", "N", "fighters side by side against the same user (default 1)"},
-         {"tracker", "SOURCE", "dtrack:PORT[:BODY], replay:FILE.csv or simulate:still|wander|dodge (default simulate:still)"},
+         {"tracker", "SOURCE", "dtrack:PORT[:BODY], replay:FILE.csv, or simulate:still|wander|dodge|FILE (a user script; default simulate:still)"},
          {"tracker-config", "FILE.json", "the room: bind address, room-to-world transform, room bounds (dtrack)"},
          {"commands", "SOURCE", "stdin, tcp:PORT (127.0.0.1) or script:FILE ('<time_s> <command>' per line)"},
          {"headless", "", "no window"},
@@ -120,12 +120,20 @@ int run_play(int argc, char** argv) {
     // The tracker.
     const std::string tracker = arguments.value("tracker").value_or("simulate:still");
     std::optional<SimulatedUser> simulated;
+    std::optional<ScriptedUser> scripted;
     std::optional<ReplayTrack> replay;
     std::unique_ptr<DtrackReceiver> receiver;
     if (tracker.starts_with("simulate:")) {
-        const std::optional<SimulatedKind> kind = simulated_kind_from_name(tracker.substr(9));
-        if (!kind) return usage_error(play_spec(), "--tracker simulate: takes still, wander or dodge, not '" + tracker.substr(9) + "'");
-        simulated.emplace(*kind, static_cast<std::uint64_t>(*seed));
+        const std::string name = tracker.substr(9);
+        if (const std::optional<SimulatedKind> kind = simulated_kind_from_name(name)) {
+            simulated.emplace(*kind, static_cast<std::uint64_t>(*seed));
+        } else if (std::filesystem::exists(name)) {
+            Result<ScriptedUser> read = ScriptedUser::read(name);
+            if (!read) return input_error(read.error().message);
+            scripted = std::move(*read);
+        } else {
+            return usage_error(play_spec(), "--tracker simulate: takes still, wander, dodge or a user script file, not '" + name + "'");
+        }
     } else if (tracker.starts_with("dtrack:")) {
         DtrackConfig config;
         if (const std::optional<std::string> file = arguments.value("tracker-config")) {
@@ -254,6 +262,9 @@ int run_play(int argc, char** argv) {
         if (simulated) {
             head = simulated->head(t);
             head_now = &head;
+        } else if (scripted) {
+            head = scripted->head(t);
+            head_now = &head;
         } else if (replay) {
             if (const std::optional<Eigen::Vector3d> replayed = replay->head(t)) {
                 head = *replayed;
@@ -281,6 +292,7 @@ int run_play(int argc, char** argv) {
             case SupervisorCommand::Verb::kick: {
                 const Side side = command->side == "left" ? Side::left : command->side == "right" ? Side::right : Side::none;
                 if (simulated) simulated->on_order(t);
+                if (scripted) scripted->on_order(t);
                 const char* verb = command->verb == SupervisorCommand::Verb::punch ? "punch" : "kick";
                 for (auto& fighter : fighters) fighter->order(retriever.semantics_id(verb), side);
                 break;

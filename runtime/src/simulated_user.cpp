@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 namespace kumite {
 namespace {
@@ -53,6 +55,110 @@ Eigen::Vector3d SimulatedUser::head(double t_s) {
     }
     }
     return start;
+}
+
+Result<ScriptedUser> ScriptedUser::read(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) return make_error(ErrorCode::io, path + ": cannot read the user script");
+    ScriptedUser user;
+    std::string line;
+    for (int number = 1; std::getline(in, line); ++number) {
+        const std::size_t first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos || line[first] == '#') continue;
+        std::istringstream words(line);
+        Action action;
+        std::string verb;
+        auto fail = [&](const std::string& what) { return make_error(ErrorCode::invalid, path + ":" + std::to_string(number) + ": " + what); };
+        if (!(words >> action.t_s >> verb) || !std::isfinite(action.t_s) || action.t_s < 0) return fail("expected '<time_s> <action>'");
+        auto numbers = [&](int required, int optional, double* out) {
+            int read = 0;
+            for (; read < required + optional && (words >> out[read]); ++read) {
+                if (!std::isfinite(out[read]) || std::abs(out[read]) > 100.0) return false;
+            }
+            std::string extra;
+            return read >= required && !(words.clear(), words >> extra);
+        };
+        double values[3] = {0.0, 0.0, 0.8};
+        if (verb == "at" || verb == "walk") {
+            action.kind = verb == "at" ? Action::Kind::at : Action::Kind::walk;
+            if (!numbers(2, verb == "walk" ? 1 : 0, values) || values[2] <= 0.0) return fail(verb + " takes X Z" + (verb == "walk" ? " [SPEED > 0]" : ""));
+        } else if (verb == "crouch" || verb == "sidestep") {
+            action.kind = verb == "crouch" ? Action::Kind::crouch : Action::Kind::sidestep;
+            if (!numbers(1, 0, values)) return fail(verb + " takes one number (metres)");
+        } else if (verb == "stand") {
+            action.kind = Action::Kind::stand;
+            if (!numbers(0, 0, values)) return fail("stand takes nothing");
+        } else if (verb == "dodge") {
+            action.kind = Action::Kind::dodge;
+            std::string mode;
+            words >> mode;
+            action.dodge_mode = mode == "duck" ? 1 : mode == "side" ? 2 : mode == "off" ? 0 : -1;
+            values[0] = 0.25;
+            if (action.dodge_mode < 0 || !numbers(0, 1, values) || values[0] < 0.0) return fail("dodge takes duck, side or off, then an optional delay");
+        } else {
+            return fail("unknown action '" + verb + "' (at, walk, crouch, stand, sidestep, dodge)");
+        }
+        action.a = values[0];
+        action.b = values[1];
+        action.c = values[2];
+        user.m_actions.push_back(action);
+    }
+    std::stable_sort(user.m_actions.begin(), user.m_actions.end(), [](const Action& x, const Action& y) { return x.t_s < y.t_s; });
+    return user;
+}
+
+void ScriptedUser::on_order(double t_s) {
+    if (m_dodge_mode != 0) m_dodge_start_s = t_s + m_dodge_delay_s;
+}
+
+Eigen::Vector3d ScriptedUser::head(double t_s) {
+    auto walked = [&](double t) {
+        if (m_walk_end_s <= m_walk_start_s) return m_walk_to;
+        return Eigen::Vector2d(m_walk_from + (m_walk_to - m_walk_from) * std::clamp((t - m_walk_start_s) / (m_walk_end_s - m_walk_start_s), 0.0, 1.0));
+    };
+    auto eased = [](double from, double to, double start, double t) { return from + (to - from) * smoothstep((t - start) / 0.2); };
+    for (; m_next < m_actions.size() && m_actions[m_next].t_s <= t_s; ++m_next) {
+        const Action& action = m_actions[m_next];
+        const double now = action.t_s;
+        switch (action.kind) {
+        case Action::Kind::at:
+            m_walk_from = m_walk_to = Eigen::Vector2d(action.a, action.b);
+            m_walk_start_s = m_walk_end_s = now;
+            break;
+        case Action::Kind::walk: {
+            m_walk_from = walked(now);
+            m_walk_to = Eigen::Vector2d(action.a, action.b);
+            m_walk_start_s = now;
+            m_walk_end_s = now + (m_walk_to - m_walk_from).norm() / action.c;
+            break;
+        }
+        case Action::Kind::crouch:
+        case Action::Kind::stand:
+            m_crouch_from = eased(m_crouch_from, m_crouch_to, m_crouch_start_s, now);
+            m_crouch_to = action.kind == Action::Kind::crouch ? action.a : 0.0;
+            m_crouch_start_s = now;
+            break;
+        case Action::Kind::sidestep:
+            m_side_from = eased(m_side_from, m_side_to, m_side_start_s, now);
+            m_side_to = m_side_from + action.a;
+            m_side_start_s = now;
+            break;
+        case Action::Kind::dodge:
+            m_dodge_mode = action.dodge_mode;
+            m_dodge_delay_s = action.a;
+            break;
+        }
+    }
+    const Eigen::Vector2d floor = walked(t_s);
+    Eigen::Vector3d head(floor.x() + eased(m_side_from, m_side_to, m_side_start_s, t_s), SimulatedUser::k_head_height_m -
+                                                                                               eased(m_crouch_from, m_crouch_to, m_crouch_start_s, t_s),
+                         floor.y());
+    const double since = t_s - m_dodge_start_s;
+    if (since >= 0.0 && since <= 1.3) {
+        const double amount = since < 0.15 ? smoothstep(since / 0.15) : since < 1.15 ? 1.0 : 1.0 - smoothstep((since - 1.15) / 0.15);
+        head += amount * (m_dodge_mode == 1 ? Eigen::Vector3d(0.0, -0.45, 0.0) : Eigen::Vector3d(0.5, 0.0, 0.0));
+    }
+    return head;
 }
 
 } // namespace kumite

@@ -1,6 +1,7 @@
 // Supervisor commands (parsing, a TCP stream on loopback) and replayed head tracks.
 
 #include "kumite/runtime/replay_track.h"
+#include "kumite/runtime/simulated_user.h"
 #include "kumite/runtime/supervisor.h"
 #include "support/test_paths.h"
 
@@ -88,4 +89,30 @@ TEST_CASE("replay: a recorded head track is played back, gaps are untracked", "[
     const Result<ReplayTrack> backwards = ReplayTrack::read(path.string());
     REQUIRE_FALSE(backwards.has_value());
     CHECK_THAT(backwards.error().message, Catch::Contains(":2:"));
+}
+
+TEST_CASE("scripted user: a file walks, crouches, sidesteps and dodges on orders", "[runtime]") {
+    const std::filesystem::path path = kumite::test::make_temp_dir("scripted") / "user.txt";
+    std::ofstream(path) << "# a user for a bout\n0 at 0 2\n1 walk 0 1 1.0\n3 crouch 0.3\n4 stand\n5 sidestep 0.4\n6 dodge duck 0.25\n";
+    Result<ScriptedUser> read = ScriptedUser::read(path.string());
+    REQUIRE(read.has_value());
+    ScriptedUser& user = *read;
+    CHECK(user.head(0.5).isApprox(Eigen::Vector3d(0.0, 1.65, 2.0)));
+    CHECK(user.head(1.5).z() == Approx(1.5));             // half way, 1 m/s
+    CHECK(user.head(2.5).z() == Approx(1.0));             // arrived
+    CHECK(user.head(3.5).y() == Approx(1.35));            // crouched
+    CHECK(user.head(4.5).y() == Approx(1.65));            // stood up
+    CHECK(user.head(5.5).x() == Approx(0.4));             // stepped aside
+    user.head(6.1);
+    user.on_order(6.1);
+    CHECK(user.head(6.3).y() == Approx(1.65));            // the dodge starts 0.25 s after the order
+    CHECK(user.head(6.8).y() == Approx(1.2));             // ducked
+    CHECK(user.head(8.0).y() == Approx(1.65));            // and back
+    for (const char* bad : {"0 jump", "x at 0 0", "0 walk 1", "0 walk 1 2 0", "0 crouch", "0 dodge sideways", "0 at 0 nan"}) {
+        std::ofstream(path) << bad << "\n";
+        const Result<ScriptedUser> refused = ScriptedUser::read(path.string());
+        INFO(bad);
+        REQUIRE_FALSE(refused.has_value());
+        CHECK_THAT(refused.error().message, Catch::Contains(":1:"));
+    }
 }

@@ -10,7 +10,11 @@
 #include <optional>
 #include <string_view>
 
+#include "kumite/core/result.h"
 #include "kumite/core/split_mix.h"
+
+#include <string>
+#include <vector>
 
 namespace kumite {
 
@@ -36,6 +40,39 @@ private:
     // dodge: the current move
     double m_dodge_start_s = -1e9;
     int m_dodges = 0;
+};
+
+// A user scripted in a file, one action per line, `<time_s> <action>` ('#' comments), applied in time order:
+//   at X Z             stand at (x, z) on the floor (metres, world), head 1.65 m up
+//   walk X Z [SPEED]   walk there in a straight line (default 0.8 m/s)
+//   crouch DEPTH       lower the head by DEPTH metres over 0.2 s;  stand  rises again
+//   sidestep DX        move DX metres along x over 0.2 s
+//   dodge duck|side [DELAY]   from now on, DELAY s (default 0.25) after each order, duck 0.45 m or sidestep 0.5 m
+//                             for 1 s;  dodge off  stops
+class ScriptedUser {
+public:
+    static Result<ScriptedUser> read(const std::string& path);
+
+    Eigen::Vector3d head(double t_s); // call with non-decreasing times
+    void on_order(double t_s);
+
+private:
+    struct Action {
+        double t_s = 0.0;
+        enum class Kind { at, walk, crouch, stand, sidestep, dodge } kind = Kind::at;
+        double a = 0.0, b = 0.0, c = 0.0; // the action's numbers
+        int dodge_mode = 0;               // 0 off, 1 duck, 2 side
+    };
+    std::vector<Action> m_actions;
+    std::size_t m_next = 0;
+    Eigen::Vector2d m_floor = Eigen::Vector2d(0.0, 1.5); // x, z
+    Eigen::Vector2d m_walk_from = m_floor, m_walk_to = m_floor;
+    double m_walk_start_s = 0.0, m_walk_end_s = 0.0;
+    double m_crouch_from = 0.0, m_crouch_to = 0.0, m_crouch_start_s = -1e9;
+    double m_side_from = 0.0, m_side_to = 0.0, m_side_start_s = -1e9;
+    int m_dodge_mode = 0;
+    double m_dodge_delay_s = 0.25;
+    double m_dodge_start_s = -1e9;
 };
 
 } // namespace kumite
