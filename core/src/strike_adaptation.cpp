@@ -1,15 +1,12 @@
 #include "kumite/core/strike_adaptation.h"
 
+#include "kumite/core/smoothstep.h"
+
 #include <algorithm>
 #include <cmath>
 
 namespace kumite {
 namespace {
-
-double smoothstep(double s) {
-    s = std::clamp(s, 0.0, 1.0);
-    return s * s * (3.0 - 2.0 * s);
-}
 
 int limb_of_segment(BodyPart segment) {
     switch (segment) {

@@ -1,17 +1,13 @@
 #include "kumite/runtime/fighter.h"
 
 #include "kumite/core/hit_trajectory.h"
+#include "kumite/core/smoothstep.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace kumite {
 namespace {
-
-double smoothstep(double s) {
-    s = std::clamp(s, 0.0, 1.0);
-    return s * s * (3.0 - 2.0 * s);
-}
 
 int first_clip_of(const MotionDatabaseView& db, std::string_view semantics) {
     for (std::size_t c = 0; c < db.clips.size(); ++c) {
@@ -89,6 +85,16 @@ void Fighter::emit(const FighterEvent& event) {
     if (m_event_count < static_cast<int>(m_events.size())) m_events[m_event_count++] = event;
 }
 
+void Fighter::emit_ignored(double t_s, const char* why) {
+    FighterEvent event;
+    event.type = FighterEvent::Type::ignored_order;
+    event.t_s = t_s;
+    event.semantics = m_pending_semantics;
+    event.side = m_pending_side;
+    event.why = why;
+    emit(event);
+}
+
 void Fighter::enter(FighterState state, double t_s) {
     if (state == m_state && m_started) return;
     m_state = state;
@@ -101,20 +107,18 @@ void Fighter::enter(FighterState state, double t_s) {
 }
 
 bool Fighter::order(int semantics, Side side) {
-    FighterEvent event;
-    event.t_s = m_now_s;
-    event.semantics = semantics;
-    event.side = side;
     const char* why = "";
     m_pending_semantics = semantics;
     m_pending_side = side;
     if (!pending_order_fits(why)) {
-        event.type = FighterEvent::Type::ignored_order;
-        event.why = why;
-        emit(event);
+        emit_ignored(m_now_s, why);
         return false;
     }
+    FighterEvent event;
     event.type = FighterEvent::Type::order;
+    event.t_s = m_now_s;
+    event.semantics = semantics;
+    event.side = side;
     emit(event);
     m_pending = true;
     return true;
@@ -206,16 +210,7 @@ void Fighter::start_strike(double t_s) {
     query.side = m_pending_side;
     query.character = body.rig->size();
     const RetrievalResult found = m_retriever.query(query, m_workspace);
-    if (!found.found) {
-        FighterEvent event;
-        event.type = FighterEvent::Type::ignored_order;
-        event.t_s = t_s;
-        event.semantics = m_pending_semantics;
-        event.side = m_pending_side;
-        event.why = "no strike of that kind can start from here";
-        emit(event);
-        return;
-    }
+    if (!found.found) return emit_ignored(t_s, "no strike of that kind can start from here");
     m_plan = {found.clip, found.start_frame, found.contact_frame, found.clip_to_world, m_head};
     m_strike_start = m_mir;
     m_strike_start_s = t_s;
@@ -308,13 +303,7 @@ void Fighter::step(double t_s, const Eigen::Vector3d* head) {
 
     if (m_pending && !m_tracking) { // the order came while the tracker has no head: nothing to aim at
         m_pending = false;
-        FighterEvent event;
-        event.type = FighterEvent::Type::ignored_order;
-        event.t_s = t_s;
-        event.semantics = m_pending_semantics;
-        event.side = m_pending_side;
-        event.why = "no head to aim at";
-        emit(event);
+        emit_ignored(t_s, "no head to aim at");
     }
     if (m_pending && (m_state == FighterState::rest || m_state == FighterState::approach)) start_strike(t_s);
 

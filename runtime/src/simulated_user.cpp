@@ -1,5 +1,7 @@
 #include "kumite/runtime/simulated_user.h"
 
+#include "kumite/core/smoothstep.h"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -8,9 +10,9 @@
 namespace kumite {
 namespace {
 
-double smoothstep(double s) {
-    s = std::clamp(s, 0.0, 1.0);
-    return s * s * (3.0 - 2.0 * s);
+// How far into a dodge `since` seconds after it began: out over 0.15 s, held, back over 0.15 s (1.3 s in all).
+double dodge_amount(double since) {
+    return since < 0.15 ? smoothstep(since / 0.15) : since < 1.15 ? 1.0 : 1.0 - smoothstep((since - 1.15) / 0.15);
 }
 
 } // namespace
@@ -48,8 +50,7 @@ Eigen::Vector3d SimulatedUser::head(double t_s) {
     case SimulatedKind::dodge: {
         const double since = t_s - m_dodge_start_s;
         if (since < 0.0 || since > 1.3) return start;
-        // Out over 0.15 s, hold, back over 0.15 s.
-        const double amount = since < 0.15 ? smoothstep(since / 0.15) : since < 1.15 ? 1.0 : 1.0 - smoothstep((since - 1.15) / 0.15);
+        const double amount = dodge_amount(since);
         const Eigen::Vector3d away = m_dodges % 2 == 1 ? Eigen::Vector3d(0.0, -0.45, 0.0) : Eigen::Vector3d(0.5, 0.0, 0.0);
         return start + amount * away;
     }
@@ -155,8 +156,7 @@ Eigen::Vector3d ScriptedUser::head(double t_s) {
                          floor.y());
     const double since = t_s - m_dodge_start_s;
     if (since >= 0.0 && since <= 1.3) {
-        const double amount = since < 0.15 ? smoothstep(since / 0.15) : since < 1.15 ? 1.0 : 1.0 - smoothstep((since - 1.15) / 0.15);
-        head += amount * (m_dodge_mode == 1 ? Eigen::Vector3d(0.0, -0.45, 0.0) : Eigen::Vector3d(0.5, 0.0, 0.0));
+        head += dodge_amount(since) * (m_dodge_mode == 1 ? Eigen::Vector3d(0.0, -0.45, 0.0) : Eigen::Vector3d(0.5, 0.0, 0.0));
     }
     return head;
 }

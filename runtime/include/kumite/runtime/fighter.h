@@ -87,6 +87,7 @@ public:
 private:
     struct Body;
     void emit(const FighterEvent& event);
+    void emit_ignored(double t_s, const char* why); // the pending order, ignored
     void enter(FighterState state, double t_s);
     void start_clip(int clip, double t_s, bool face_user);
     void play_clip(double t_s);
