@@ -108,12 +108,18 @@ void Fighter::enter(FighterState state, double t_s) {
 
 bool Fighter::order(int semantics, Side side) {
     const char* why = "";
-    m_pending_semantics = semantics;
-    m_pending_side = side;
-    if (!pending_order_fits(why)) {
-        emit_ignored(m_now_s, why);
+    if (!order_fits(semantics, why)) { // the pending order, if any, stays as it was
+        FighterEvent event;
+        event.type = FighterEvent::Type::ignored_order;
+        event.t_s = m_now_s;
+        event.semantics = semantics;
+        event.side = side;
+        event.why = why;
+        emit(event);
         return false;
     }
+    m_pending_semantics = semantics;
+    m_pending_side = side;
     FighterEvent event;
     event.type = FighterEvent::Type::order;
     event.t_s = m_now_s;
@@ -124,12 +130,12 @@ bool Fighter::order(int semantics, Side side) {
     return true;
 }
 
-bool Fighter::pending_order_fits(const char*& why) const {
+bool Fighter::order_fits(int semantics, const char*& why) const {
     if (m_state == FighterState::strike || m_state == FighterState::recover || m_pending) {
         why = "already striking";
         return false;
     }
-    if (m_pending_semantics < 0) {
+    if (semantics < 0) {
         why = "the database has no such strike";
         return false;
     }

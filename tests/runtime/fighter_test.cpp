@@ -165,3 +165,18 @@ TEST_CASE("fighter: switching character mid-strike carries the strike on, on the
     CHECK(b.count(FighterEvent::Type::strike) == 1);
     CHECK(b.fighter->pose().local_rotations.size() == std::size_t(b.giant.skeleton().joint_count()));
 }
+
+TEST_CASE("fighter: an order refused while another waits leaves the waiting one as it was", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    if (!content) return;
+    Bout b(content->view());
+    const Eigen::Vector3d user(0.0, 1.6, 0.9);
+    b.run(0, 240, [&](double) { return std::optional(user); });
+    REQUIRE(b.fighter->order(b.retriever->semantics_id("kick"), Side::right));
+    CHECK_FALSE(b.fighter->order(b.retriever->semantics_id("punch"), Side::left)); // a second order before the step
+    b.run(240, 300, [&](double) { return std::optional(user); });
+    const auto strike = std::find_if(b.events.begin(), b.events.end(), [](const FighterEvent& e) { return e.type == FighterEvent::Type::strike; });
+    REQUIRE(strike != b.events.end());
+    CHECK(b.db.string(b.db.clips[strike->clip].semantics) == "kick"); // the first order, not the refused one
+    CHECK(strike->side == Side::right);
+}

@@ -95,7 +95,7 @@ private:
     void begin_strike(); // the current body's adapter on m_plan, from m_strike_start
     void play_strike(double t_s);
     void finish_frame();
-    bool pending_order_fits(const char*& why) const;
+    bool order_fits(int semantics, const char*& why) const;
     HeadingFrame heading_towards_user() const;
     double leg_length() const;
     double distance_to_user() const; // horizontal, pelvis to head
