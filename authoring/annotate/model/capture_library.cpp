@@ -1,0 +1,84 @@
+#include "capture_library.h"
+
+#include "kumite/formats/capture_file.h"
+
+#include <cstdlib>
+
+namespace kumite::annotate {
+
+std::filesystem::path default_mocap_root() {
+    const std::filesystem::path relative = "data/mocap";
+    if (const char* folder = std::getenv("KUMITE_MOCAP_ROOT"); folder && *folder) return folder;
+    std::error_code error;
+    if (std::filesystem::exists(relative, error)) return std::filesystem::absolute(relative, error);
+    const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
+    if (!error) {
+        const std::filesystem::path repository_root = executable.parent_path().parent_path().parent_path();
+        if (std::filesystem::exists(repository_root / relative, error)) return repository_root / relative;
+    }
+    return relative;
+}
+
+std::string source_relative_to_root(const std::filesystem::path& path, const std::filesystem::path& root) {
+    std::error_code error;
+    const std::filesystem::path absolute = std::filesystem::weakly_canonical(path, error);
+    if (error) return path.generic_string();
+    const std::filesystem::path absolute_root = std::filesystem::weakly_canonical(root, error);
+    if (error) return path.generic_string();
+    const std::filesystem::path relative = absolute.lexically_relative(absolute_root);
+    if (!relative.empty() && *relative.begin() != "..") return relative.generic_string();
+    return absolute.generic_string();
+}
+
+RawAnnotatedClip clip_from_suggestion(const StrikeSuggestion& strike, const std::string& source) {
+    RawAnnotatedClip clip;
+    clip.source = source;
+    clip.name = std::filesystem::path(source).stem().string() + "_" + std::string(body_part_name(strike.segment)) + "_" +
+                std::to_string(strike.hit_frame);
+    clip.first_frame = strike.first_frame;
+    clip.last_frame = strike.last_frame;
+    clip.semantics = strike_semantics_name(strike.semantics);
+    clip.segment = strike.segment;
+    clip.side = strike.side;
+    clip.hit_frame = strike.hit_frame;
+    clip.mirror = true; // as `kumite suggest`: the captures hold one side of most strikes, the mirror gives the other
+    return clip;
+}
+
+std::filesystem::path CaptureLibrary::resolve(const std::string& source) const {
+    const std::filesystem::path path(source);
+    std::error_code error;
+    if (path.is_absolute() || std::filesystem::exists(path, error)) return path;
+    return m_mocap_root / path;
+}
+
+Result<const LoadedCapture*> CaptureLibrary::load(const std::filesystem::path& path_or_source) {
+    const std::filesystem::path path = resolve(path_or_source.string());
+    const std::string source = source_relative_to_root(path, m_mocap_root);
+    if (const LoadedCapture* known = find(source)) return known;
+
+    Result<BvhFile> file = capture_read_file(path);
+    if (!file) return file.error();
+    auto capture = std::make_unique<LoadedCapture>();
+    capture->path = path;
+    capture->source = source;
+    capture->file = std::move(*file);
+    Result<RestAnatomy> anatomy = rest_anatomy_build(capture->file.clip, capture->file.body_map);
+    if (anatomy) {
+        capture->anatomy = std::move(*anatomy);
+        capture->suggestions = strikes_detect(capture->file.clip, *capture->anatomy);
+    } else {
+        capture->anatomy_error = path.string() + ": " + anatomy.error().message;
+    }
+    m_captures.push_back(std::move(capture));
+    return m_captures.back().get();
+}
+
+const LoadedCapture* CaptureLibrary::find(const std::string& source) const {
+    for (const auto& capture : m_captures) {
+        if (capture->source == source) return capture.get();
+    }
+    return nullptr;
+}
+
+} // namespace kumite::annotate

@@ -1,0 +1,39 @@
+#include "clip_trajectory.h"
+
+namespace kumite::annotate {
+
+Result<ClipTrajectory> clip_trajectory_compute(const LoadedCapture& capture, BodyPart segment, int first_frame, int hit_frame,
+                                               int last_frame) {
+    if (!capture.anatomy) return make_error(ErrorCode::invalid, capture.anatomy_error);
+    const int hit_joint = capture.file.body_map.joint(segment);
+    if (hit_joint < 0) {
+        return make_error(ErrorCode::invalid, capture.source + ": no joint plays " + std::string(body_part_name(segment)));
+    }
+    const int frame_count = capture.file.clip.frame_count();
+    if (first_frame < 0 || first_frame > hit_frame || hit_frame > last_frame || last_frame >= frame_count) {
+        return make_error(ErrorCode::invalid, capture.source + ": frames " + std::to_string(first_frame) + " <= hit " +
+                                                  std::to_string(hit_frame) + " <= " + std::to_string(last_frame) + " < " +
+                                                  std::to_string(frame_count) + " do not hold");
+    }
+    const HitTrajectory trajectory =
+        hit_trajectory_compute(capture.file.clip, *capture.anatomy, hit_joint, first_frame, hit_frame, last_frame);
+
+    ClipTrajectory result;
+    result.points_world = trajectory.hit_points;
+    result.contact_world = trajectory.hit_points[static_cast<size_t>(hit_frame - first_frame)];
+    result.box_in_heading = trajectory.box_in_heading;
+    if (!trajectory.start_boxes.empty()) {
+        result.box_in_first_heading = trajectory.start_boxes.front();
+    } else { // the hit is the first frame: the path is one point
+        result.box_in_first_heading.extend(trajectory.point_from(0, 0));
+    }
+    const AlignedBox& box = result.box_in_first_heading;
+    for (int corner = 0; corner < 8; ++corner) {
+        const Eigen::Vector3d in_heading((corner & 1) ? box.max.x() : box.min.x(), (corner & 2) ? box.max.y() : box.min.y(),
+                                         (corner & 4) ? box.max.z() : box.min.z());
+        result.box_corners_world[static_cast<size_t>(corner)] = trajectory.headings.front().to_world(in_heading);
+    }
+    return result;
+}
+
+} // namespace kumite::annotate

@@ -1,0 +1,67 @@
+// kumite-annotate [FILE.bvh | ANNOTATIONS.json | FOLDER]... [--mocap-root DIR] [--screenshot OUT.png]
+// The animator's annotation window (../../shared/docs/CLI.md). --screenshot renders the window once the files are
+// loaded, writes the PNG and exits, also with QT_QPA_PLATFORM=offscreen.
+
+#include "main_window.h"
+
+#include <QApplication>
+#include <QCommandLineParser>
+#include <QTimer>
+
+#include <cstdio>
+
+int main(int argc, char** argv) {
+    QApplication application(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("kumite"));
+    QApplication::setApplicationName(QStringLiteral("kumite-annotate"));
+
+    QCommandLineParser parser;
+    parser.setApplicationDescription(QStringLiteral(
+        "The animator's window: open captures, trim them, tag strikes (hit segment, semantics, side, hit frame), check the\n"
+        "hit trajectory and its box, save the annotation file, bake the database and look at its pose-distance heatmap."));
+    parser.addHelpOption();
+    parser.addPositionalArgument(QStringLiteral("files"), QStringLiteral("captures (.bvh), folders of captures or an annotation file (.json)"),
+                                 QStringLiteral("[FILE.bvh | ANNOTATIONS.json | FOLDER]..."));
+    const QCommandLineOption screenshot(QStringLiteral("screenshot"), QStringLiteral("render the window after loading into OUT.png and exit"),
+                                        QStringLiteral("OUT.png"));
+    const QCommandLineOption mocap_root(QStringLiteral("mocap-root"),
+                                        QStringLiteral("folder annotation sources are relative to (default $KUMITE_MOCAP_ROOT or data/mocap)"),
+                                        QStringLiteral("DIR"));
+    parser.addOption(screenshot);
+    parser.addOption(mocap_root);
+    if (!parser.parse(QApplication::arguments())) {
+        std::fprintf(stderr, "kumite-annotate: %s (see --help)\n", qPrintable(parser.errorText()));
+        return 2;
+    }
+    if (parser.isSet(QStringLiteral("help"))) {
+        std::printf("%s", qPrintable(parser.helpText()));
+        return 0;
+    }
+
+    const bool taking_screenshot = parser.isSet(screenshot);
+    const std::filesystem::path root =
+        parser.isSet(mocap_root) ? std::filesystem::path(parser.value(mocap_root).toStdString()) : kumite::annotate::default_mocap_root();
+    kumite::annotate::MainWindow window(root, /*interactive=*/!taking_screenshot);
+    window.show();
+    for (const QString& path : parser.positionalArguments()) window.open_path(path);
+
+    if (taking_screenshot) {
+        for (const kumite::annotate::Issue& issue : window.document().issues()) {
+            std::fprintf(stderr, "kumite-annotate: %s%s%s\n", qPrintable(issue.file),
+                         issue.line > 0 ? qPrintable(QStringLiteral(":%1: ").arg(issue.line)) : ": ", qPrintable(issue.message));
+        }
+        const QString output = parser.value(screenshot);
+        int status = 0;
+        // After the first paint of every widget: layouts settled, the viewport drawn.
+        QTimer::singleShot(100, &window, [&] {
+            if (!window.write_screenshot(output)) {
+                std::fprintf(stderr, "kumite-annotate: cannot write the screenshot %s\n", qPrintable(output));
+                status = 1;
+            }
+            QApplication::exit(status);
+        });
+        const int loop_status = QApplication::exec();
+        return status != 0 ? status : loop_status;
+    }
+    return QApplication::exec();
+}

@@ -1,0 +1,30 @@
+#pragma once
+// Fills the viewport's Scene from the document's state at one frame: the capture's skeleton as capsules (each
+// pickable by the joint its segment starts at, the hit segment highlighted), and for the strike on show (the
+// selected clip, or a previewed suggestion) the hit joint's trajectory as dots, the contact point as a sphere
+// and the hit-path box as twelve edges. Everything is lowered by the capture's floor height so it stands on the
+// grid.
+
+#include "capture_library.h"
+#include "scene.h"
+
+#include <optional>
+
+namespace kumite::annotate {
+
+struct StrikeOnShow {
+    BodyPart segment = BodyPart::hand_r;
+    int first_frame = 0;
+    int hit_frame = 0;
+    int last_frame = 0;
+    bool proposal = false; // a suggestion not accepted yet: drawn in other colours
+};
+
+// Returns a message when the strike's trajectory could not be computed (the skeleton is still drawn).
+std::optional<std::string> scene_build(view::Scene& scene, const LoadedCapture& capture, int frame,
+                                       const std::optional<StrikeOnShow>& strike, std::optional<BodyPart> highlight);
+
+// The body part a picked capsule id (a joint) belongs to: the joint's own part, else its nearest mapped ancestor's.
+std::optional<BodyPart> scene_part_of_pick(const LoadedCapture& capture, int picked_joint);
+
+} // namespace kumite::annotate
