@@ -195,7 +195,10 @@ void TimelinePanel::rebuild_suggestions() {
             accept->setEnabled(!accepted);
             accept->setToolTip(tr("Add this strike to the file as a clip (mirrored too)"));
             const std::string source = capture->source;
-            connect(accept, &QPushButton::clicked, this, [this, strike, source] { m_document.add_suggestion(strike, source); });
+            // Once only: the list is rebuilt right after, and the old buttons linger until deleted later.
+            connect(accept, &QPushButton::clicked, this, [this, strike, source] {
+                if (!suggestion_accepted(m_document, strike, source)) m_document.add_suggestion(strike, source);
+            });
             m_suggestions->setItemWidget(item, 5, accept);
             if (m_preview && *m_preview == int(index)) m_suggestions->setCurrentItem(item);
         }
