@@ -57,12 +57,14 @@ bool Autosaver::write_now() {
     const QString path = sidecar_path();
     if (path.isEmpty()) {
         m_last_error = tr("nowhere to autosave: the document has no file and no capture");
+        emit failed(m_last_error);
         return false;
     }
     const std::string content = m_document.text();
     QSaveFile file(path);
     if (!file.open(QIODevice::WriteOnly) || file.write(content.data(), static_cast<qint64>(content.size())) < 0 || !file.commit()) {
         m_last_error = path + QStringLiteral(": cannot autosave: ") + file.errorString();
+        emit failed(m_last_error);
         return false;
     }
     if (!m_sidecars.contains(path)) m_sidecars.append(path);

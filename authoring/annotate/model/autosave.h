@@ -36,6 +36,7 @@ public:
 
 signals:
     void written(const QString& path);
+    void failed(const QString& message); // the sidecar could not be written (a read-only capture folder, ...)
 
 private:
     void on_document_changed();

@@ -44,6 +44,12 @@ MainWindow::MainWindow(std::filesystem::path mocap_root, bool interactive, QWidg
     connect(m_heatmap, &HeatmapPanel::jump_requested, this, &MainWindow::jump_to);
     connect(m_autosaver.get(), &Autosaver::written, this,
             [this](const QString& path) { statusBar()->showMessage(tr("Autosaved to %1").arg(path), 3000); });
+    // Reported once per message: the timer retries after every edit.
+    connect(m_autosaver.get(), &Autosaver::failed, this, [this](const QString& message) {
+        if (message == m_last_autosave_error) return;
+        m_last_autosave_error = message;
+        m_document->report(issue_from_message(message.toStdString(), {}, IssueSeverity::warning));
+    });
     update_title();
     resize(1400, 900);
 }

@@ -78,6 +78,7 @@ private:
     QDockWidget* m_issues_dock = nullptr;
     QMenu* m_recent_menu = nullptr;
     QString m_last_trajectory_message;
+    QString m_last_autosave_error;
 };
 
 } // namespace kumite::annotate
