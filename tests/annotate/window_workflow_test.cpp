@@ -1,0 +1,293 @@
+// The real kumite-annotate window, offscreen, driven the way an animator drives it: open the kick capture,
+// accept the three right-kick suggestions, save, bake, click the heatmap; drag the hit marker, pick a bone,
+// quit with unsaved changes; and a window process killed after an edit whose autosave is recovered on reopen.
+// Dialogs (file choosers, questions) are answered by a timer, as a user would click them.
+
+#include "heatmap_panel.h"
+#include "main_window.h"
+#include "scene_view.h"
+#include "support/test_paths.h"
+#include "timeline_strip.h"
+
+#include "kumite/formats/motion_database_file.h"
+
+#include <catch2/catch.hpp>
+
+#include <QApplication>
+#include <QDockWidget>
+#include <QElapsedTimer>
+#include <QFileDialog>
+#include <QMessageBox>
+#include <QMouseEvent>
+#include <QPushButton>
+#include <QThread>
+#include <QTimer>
+
+#include <csignal>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+using namespace kumite;
+using namespace kumite::annotate;
+
+namespace {
+
+const std::string k_kick_capture = "bandai-namco-1/dataset-1_kick_normal_001.bvh";
+
+QApplication& gui_application() {
+    static int argc = 1;
+    static char name[] = "annotate_window_tests";
+    static char* argv[] = {name, nullptr};
+    qputenv("QT_QPA_PLATFORM", "offscreen");
+    // Never destroyed: a QApplication torn down by static destruction, after Qt's own globals, crashes at exit.
+    static QApplication* application = new QApplication(argc, argv);
+    return *application;
+}
+
+void settle(int ms = 50) {
+    QElapsedTimer timer;
+    timer.start();
+    while (timer.elapsed() < ms) QApplication::processEvents(QEventLoop::AllEvents, 10);
+    QApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete); // replaced list widgets really go
+}
+
+bool wait_until(const std::function<bool()>& done, int timeout_ms = 10000) {
+    QElapsedTimer timer;
+    timer.start();
+    while (!done()) {
+        if (timer.elapsed() > timeout_ms) return false;
+        QApplication::processEvents(QEventLoop::AllEvents, 10);
+        QThread::msleep(2);
+    }
+    return true;
+}
+
+// Answers the next modal dialog of type T with `answer`, from the event loop the dialog runs.
+template <class T>
+void answer_next_dialog(std::function<void(T*)> answer) {
+    auto* timer = new QTimer(qApp);
+    timer->setInterval(10);
+    QObject::connect(timer, &QTimer::timeout, [timer, answer] {
+        if (auto* dialog = qobject_cast<T*>(QApplication::activeModalWidget())) {
+            timer->stop();
+            timer->deleteLater();
+            answer(dialog);
+        }
+    });
+    timer->start();
+}
+
+void choose_file(const QString& path) {
+    answer_next_dialog<QFileDialog>([path](QFileDialog* dialog) {
+        dialog->selectFile(path);
+        QMetaObject::invokeMethod(dialog, "accept"); // protected in QFileDialog, a slot all the same
+    });
+}
+
+void press_button(QMessageBox::StandardButton button) {
+    answer_next_dialog<QMessageBox>([button](QMessageBox* box) { box->button(button)->click(); });
+}
+
+// A mocap root in a temp folder with the kick capture, so autosaves never land in the shared captures.
+std::filesystem::path temp_mocap_root(const std::string& stem) {
+    const std::filesystem::path root = test::make_temp_dir(stem);
+    std::filesystem::create_directories(root / "bandai-namco-1");
+    std::filesystem::copy_file(test::mocap_root() / k_kick_capture, root / k_kick_capture);
+    return root;
+}
+
+int click_accept_buttons(QWidget& window, int at_most) {
+    int clicked = 0;
+    while (clicked < at_most) {
+        QPushButton* accept = nullptr;
+        for (QPushButton* button : window.findChildren<QPushButton*>()) {
+            if (button->text() == "Accept" && button->isEnabled()) accept = button;
+        }
+        if (!accept) break;
+        accept->click();
+        settle(5);
+        ++clicked;
+    }
+    return clicked;
+}
+
+void send_mouse(QWidget* widget, QEvent::Type type, QPointF point, Qt::MouseButtons buttons) {
+    QMouseEvent event(type, point, widget->mapToGlobal(point), Qt::LeftButton, buttons, Qt::NoModifier);
+    QApplication::sendEvent(widget, &event);
+}
+
+std::string read_text(const std::filesystem::path& path) {
+    std::ifstream stream(path, std::ios::binary);
+    std::ostringstream text;
+    text << stream.rdbuf();
+    return text.str();
+}
+
+bool have_captures() { return std::filesystem::exists(test::mocap_root() / k_kick_capture); }
+
+} // namespace
+
+TEST_CASE("annotate window: three right kicks from suggestions, saved, baked, heatmap clicked", "[annotate_window]") {
+    gui_application();
+    if (!have_captures()) { WARN("captures absent: skipped"); return; }
+    const std::filesystem::path root = temp_mocap_root("annotate-window");
+    MainWindow window(root);
+    window.show();
+    REQUIRE(window.open_path(QString::fromStdString((root / k_kick_capture).string())));
+    settle();
+    CHECK(click_accept_buttons(window, 10) == 3);
+    AnnotationDocument& document = window.document();
+    REQUIRE(document.clip_count() == 3);
+    CHECK(window.isWindowModified());
+    CHECK(window.windowTitle().contains("[*]"));
+
+    const std::filesystem::path saved = root / "kicks.json";
+    choose_file(QString::fromStdString(saved.string()));
+    REQUIRE(window.save());
+    CHECK_FALSE(window.isWindowModified());
+    CHECK(read_text(saved) == annotations_write_string(document.annotations()));
+    for (int index = 0; index < 3; ++index) CHECK(document.clip(index).source == k_kick_capture);
+
+    const std::filesystem::path database = root / "kicks.kdb";
+    choose_file(QString::fromStdString(database.string()));
+    window.bake();
+    REQUIRE(std::filesystem::exists(database));
+    Result<MotionDatabase> opened = MotionDatabase::open(database, /*verify_hash=*/true);
+    REQUIRE(opened);
+    CHECK(opened->view().clips.size() == 6);
+    CHECK(document.issues().empty());
+
+    auto* heatmap = window.findChild<HeatmapView*>();
+    REQUIRE(heatmap);
+    settle();
+    REQUIRE(heatmap->isVisible());
+    const int clusters = int(opened->view().clusters.size());
+    const double side = std::min(heatmap->width(), heatmap->height()) - 8;
+    const QPointF origin((heatmap->width() - side) / 2.0, (heatmap->height() - side) / 2.0);
+    document.select_clip(-1);
+    int clicked_row = -1, clicked_column = -1;
+    QObject::connect(heatmap, &HeatmapView::cell_clicked, [&](int row, int column) { clicked_row = row, clicked_column = column; });
+    send_mouse(heatmap, QEvent::MouseButtonPress, origin + QPointF(2.5 * side / clusters, 0.5 * side / clusters), Qt::LeftButton);
+    CHECK(clicked_row == 0);
+    CHECK(clicked_column == 2);
+    // The jump selected the clip of cluster 0's representative pose.
+    const int selected = document.selected_clip();
+    REQUIRE(selected >= 0);
+    const PoseLocation location = pose_location(opened->view(), pose_heatmap_of_clusters(opened->view()).poses[0]);
+    CHECK(document.clip(selected).name == location.clip_name);
+}
+
+TEST_CASE("annotate window: a hit-marker drag is one undo step, picking a bone sets the hit segment", "[annotate_window]") {
+    gui_application();
+    if (!have_captures()) { WARN("captures absent: skipped"); return; }
+    const std::filesystem::path root = temp_mocap_root("annotate-window-drag");
+    MainWindow window(root, /*interactive=*/false);
+    window.show();
+    REQUIRE(window.open_path(QString::fromStdString((root / k_kick_capture).string())));
+    settle();
+    REQUIRE(click_accept_buttons(window, 1) == 1);
+    AnnotationDocument& document = window.document();
+    document.select_clip(0);
+    settle();
+    const RawAnnotatedClip before = document.clip(0);
+    const int frame_count = document.current_capture()->file.clip.frame_count();
+
+    auto* strip = window.findChild<TimelineStrip*>();
+    REQUIRE(strip);
+    REQUIRE(strip->width() > 100);
+    auto x_of = [&](int frame) { return 8.0 + (strip->width() - 16.0) * frame / (frame_count - 1); };
+    const double y = strip->height() / 2.0;
+    const int steps = document.undo_stack()->count();
+    send_mouse(strip, QEvent::MouseButtonPress, QPointF(x_of(*before.hit_frame), y), Qt::LeftButton);
+    for (int offset = 1; offset <= 5; ++offset) {
+        send_mouse(strip, QEvent::MouseMove, QPointF(x_of(*before.hit_frame + offset), y), Qt::LeftButton);
+    }
+    send_mouse(strip, QEvent::MouseButtonRelease, QPointF(x_of(*before.hit_frame + 5), y), Qt::NoButton);
+    CHECK(document.clip(0).hit_frame == *before.hit_frame + 5);
+    CHECK(document.undo_stack()->count() == steps + 1);
+    CHECK(document.undo_stack()->undoText() == "Move Hit Frame");
+    document.undo_stack()->undo();
+    CHECK(document.clip(0).hit_frame == before.hit_frame);
+
+    auto* view = window.findChild<view::SceneView*>();
+    REQUIRE(view);
+    const int left_ankle = document.current_capture()->file.body_map.joint(BodyPart::foot_l);
+    emit view->picked(left_ankle);
+    CHECK(document.clip(0).segment == BodyPart::foot_l);
+    CHECK(document.clip(0).side == Side::left);
+    CHECK(document.undo_stack()->undoText() == "Set Hit Segment");
+    document.undo_stack()->undo();
+    CHECK(document.clip(0).segment == BodyPart::foot_r);
+}
+
+TEST_CASE("annotate window: quitting with unsaved changes asks; Cancel keeps the window open", "[annotate_window]") {
+    gui_application();
+    if (!have_captures()) { WARN("captures absent: skipped"); return; }
+    const std::filesystem::path root = temp_mocap_root("annotate-window-quit");
+    MainWindow window(root);
+    window.show();
+    REQUIRE(window.open_path(QString::fromStdString((root / k_kick_capture).string())));
+    settle();
+    REQUIRE(click_accept_buttons(window, 1) == 1);
+    press_button(QMessageBox::Cancel);
+    CHECK_FALSE(window.close());
+    CHECK(window.isVisible());
+    press_button(QMessageBox::Discard);
+    CHECK(window.close());
+}
+
+// Run by the next test in a child process: edits an annotation file in the window, waits for the autosave,
+// then dies by SIGKILL (no clean-up of any kind).
+TEST_CASE("annotate window child: edit then get killed", "[.annotate_window_child]") {
+    const char* file = std::getenv("KUMITE_ANNOTATE_CHILD_FILE");
+    const char* root = std::getenv("KUMITE_ANNOTATE_CHILD_ROOT");
+    if (!file || !root) return;
+    gui_application();
+    MainWindow window(root, /*interactive=*/false);
+    window.show();
+    REQUIRE(window.open_path(file));
+    window.document().set_current_source(k_kick_capture);
+    settle();
+    REQUIRE(click_accept_buttons(window, 2) == 2);
+    const std::filesystem::path sidecar = std::string(file) + ".autosave";
+    REQUIRE(wait_until([&] { return read_text(sidecar) == window.document().text(); }));
+    std::raise(SIGKILL);
+}
+
+TEST_CASE("annotate window: a killed window's edits are offered back and recovered on reopen", "[annotate_window]") {
+    gui_application();
+    if (!have_captures()) { WARN("captures absent: skipped"); return; }
+    const std::filesystem::path root = temp_mocap_root("annotate-window-kill");
+    const std::filesystem::path file = root / "kicks.json";
+    {
+        AnnotationDocument document(root);
+        REQUIRE(document.open_capture(QString::fromStdString((root / k_kick_capture).string())));
+        document.add_suggestion(document.current_capture()->suggestions.front(), k_kick_capture);
+        REQUIRE(document.save_as(QString::fromStdString(file.string())));
+    }
+    const std::string saved_text = read_text(file);
+    const test::CommandOutput child = test::run_command(
+        "KUMITE_ANNOTATE_CHILD_FILE=" + file.string() + " KUMITE_ANNOTATE_CHILD_ROOT=" + root.string() + " " +
+        (test::bin_dir() / "annotate_window_tests").string() + " \"annotate window child: edit then get killed\"");
+    INFO(child.out << child.err);
+    REQUIRE(child.status == 128 + SIGKILL);
+    CHECK(read_text(file) == saved_text); // the file itself was never touched
+    const std::string autosaved = read_text(file.string() + ".autosave");
+    REQUIRE_FALSE(autosaved.empty());
+    Result<RawAnnotations> recovered_clips = annotations_parse(autosaved, "autosave");
+    REQUIRE(recovered_clips);
+    CHECK(recovered_clips->clips.size() == 3);
+
+    MainWindow window(root);
+    window.show();
+    press_button(QMessageBox::Yes);
+    REQUIRE(window.open_path(QString::fromStdString(file.string())));
+    CHECK(window.document().text() == autosaved);
+    CHECK(window.document().is_dirty());
+    CHECK(window.isWindowModified());
+    choose_file(QString::fromStdString(file.string()));
+    REQUIRE(window.save());
+    CHECK(read_text(file) == autosaved);
+    CHECK_FALSE(std::filesystem::exists(file.string() + ".autosave"));
+}
