@@ -81,7 +81,7 @@ Fighter::~Fighter() = default;
 
 std::span<const Eigen::Vector3d> Fighter::positions() const { return m_bodies[m_character]->decoder.model_positions(); }
 
-void Fighter::emit(const FighterEvent& event) {
+void Fighter::push_event(const FighterEvent& event) {
     if (m_event_count < static_cast<int>(m_events.size())) m_events[m_event_count++] = event;
 }
 
@@ -92,7 +92,7 @@ void Fighter::emit_ignored(double t_s, const char* why) {
     event.semantics = m_pending_semantics;
     event.side = m_pending_side;
     event.why = why;
-    emit(event);
+    push_event(event);
 }
 
 void Fighter::enter(FighterState state, double t_s) {
@@ -103,7 +103,7 @@ void Fighter::enter(FighterState state, double t_s) {
     event.type = FighterEvent::Type::state;
     event.t_s = t_s;
     event.state = state;
-    emit(event);
+    push_event(event);
 }
 
 bool Fighter::order(int semantics, Side side) {
@@ -115,7 +115,7 @@ bool Fighter::order(int semantics, Side side) {
         event.semantics = semantics;
         event.side = side;
         event.why = why;
-        emit(event);
+        push_event(event);
         return false;
     }
     m_pending_semantics = semantics;
@@ -125,7 +125,7 @@ bool Fighter::order(int semantics, Side side) {
     event.t_s = m_now_s;
     event.semantics = semantics;
     event.side = side;
-    emit(event);
+    push_event(event);
     m_pending = true;
     return true;
 }
@@ -149,7 +149,7 @@ void Fighter::set_character(int index) {
     event.type = FighterEvent::Type::character;
     event.t_s = m_now_s;
     event.character = index;
-    emit(event);
+    push_event(event);
     if (m_state == FighterState::strike) { // the strike carries on, on the new skeleton
         m_bodies[m_character]->decoder.decode(m_pose, m_strike_start);
         begin_strike();
@@ -258,7 +258,7 @@ void Fighter::play_strike(double t_s) {
         event.head_distance_m = m_tracking ? (frame.effector - m_head).norm() : 1e9;
         event.hit = event.head_distance_m <= m_settings.hit_radius_m;
         event.range_m = m_strike_range_m;
-        emit(event);
+        push_event(event);
     }
     body.encoder.encode(m_mir, m_pose.view());
     if (index >= adapter.frame_count() - 1) {
@@ -291,7 +291,7 @@ void Fighter::step(double t_s, const Eigen::Vector3d* head) {
             FighterEvent event;
             event.type = FighterEvent::Type::tracker_back;
             event.t_s = t_s;
-            emit(event);
+            push_event(event);
             if (m_state == FighterState::hold) {
                 enter(FighterState::rest, t_s);
                 start_clip(m_guard_clip, t_s, true);
@@ -303,7 +303,7 @@ void Fighter::step(double t_s, const Eigen::Vector3d* head) {
         FighterEvent event;
         event.type = FighterEvent::Type::tracker_lost;
         event.t_s = t_s;
-        emit(event);
+        push_event(event);
         if (m_state == FighterState::rest || m_state == FighterState::approach) enter(FighterState::hold, t_s);
     }
 

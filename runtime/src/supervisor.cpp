@@ -1,6 +1,10 @@
 #include "kumite/runtime/supervisor.h"
 
+#include <algorithm>
 #include <arpa/inet.h>
+#include <cmath>
+#include <fstream>
+#include <sstream>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -46,6 +50,32 @@ Result<SupervisorCommand> supervisor_command_parse(std::string_view line) {
         return make_error(ErrorCode::invalid, "unknown command '" + std::string(verb) + "' (punch, kick, character, quit)");
     }
     return command;
+}
+
+Result<CommandScript> CommandScript::read(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) return make_error(ErrorCode::io, path + ": cannot read the command script");
+    CommandScript script;
+    std::string text;
+    for (int number = 1; std::getline(in, text); ++number) {
+        if (!text.empty() && text.back() == '\r') text.pop_back();
+        const std::size_t first = text.find_first_not_of(" \t");
+        if (first == std::string::npos || text[first] == '#') continue;
+        std::istringstream stream(text);
+        Line line;
+        line.line = number;
+        if (!(stream >> line.t_s) || !std::isfinite(line.t_s) || line.t_s < 0) {
+            return make_error(ErrorCode::parse, path + ":" + std::to_string(number) + ": expected '<time_s> <command>'");
+        }
+        std::getline(stream >> std::ws, line.command);
+        script.m_lines.push_back(std::move(line));
+    }
+    std::stable_sort(script.m_lines.begin(), script.m_lines.end(), [](const Line& a, const Line& b) { return a.t_s < b.t_s; });
+    return script;
+}
+
+void CommandScript::due(double t_s, const std::function<void(const Line&)>& on_line) {
+    for (; m_next < m_lines.size() && m_lines[m_next].t_s <= t_s; ++m_next) on_line(m_lines[m_next]);
 }
 
 Result<std::unique_ptr<CommandStream>> CommandStream::open(std::string_view source) {

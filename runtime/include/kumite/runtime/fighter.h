@@ -80,13 +80,15 @@ public:
     bool has_latched_target() const { return m_state == FighterState::strike; }
     const Eigen::Vector3d& latched_target() const { return m_plan.target_world; }
     int strike_clip() const { return m_plan.clip; }
+    const StrikePlan& strike_plan() const { return m_plan; } // valid while striking
+    double leg_length() const; // of the current character
 
     std::span<const FighterEvent> events() const { return {m_events.data(), std::size_t(m_event_count)}; }
     void clear_events() { m_event_count = 0; }
 
 private:
     struct Body;
-    void emit(const FighterEvent& event);
+    void push_event(const FighterEvent& event);
     void emit_ignored(double t_s, const char* why); // the pending order, ignored
     void enter(FighterState state, double t_s);
     void start_clip(int clip, double t_s, bool face_user);
@@ -97,7 +99,6 @@ private:
     void finish_frame();
     bool order_fits(int semantics, const char*& why) const;
     HeadingFrame heading_towards_user() const;
-    double leg_length() const;
     double distance_to_user() const; // horizontal, pelvis to head
 
     MotionDatabaseView m_db;

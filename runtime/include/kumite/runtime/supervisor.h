@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace kumite {
 
@@ -22,6 +23,24 @@ struct SupervisorCommand {
 
 // Parses one line; an error says what is wrong with it.
 Result<SupervisorCommand> supervisor_command_parse(std::string_view line);
+
+// A script of timed commands: `<time_s> <command>` per line, `#` comments and blank lines skipped; kept in time
+// order (lines with equal times in file order).
+class CommandScript {
+public:
+    struct Line {
+        double t_s = 0.0;
+        std::string command;
+        int line = 0; // in the file, for messages
+    };
+    static Result<CommandScript> read(const std::string& path);
+    // Calls `on_line` for every line due at t that was not handed out yet.
+    void due(double t_s, const std::function<void(const Line&)>& on_line);
+
+private:
+    std::vector<Line> m_lines;
+    std::size_t m_next = 0;
+};
 
 class CommandStream {
 public:

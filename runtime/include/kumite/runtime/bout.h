@@ -1,0 +1,117 @@
+#pragma once
+// A bout: what `kumite play` runs, headless or in the viewer. One or more fighters (side by side) against one
+// user's head, driven by the supervisor's commands (a timed script, a stdin or TCP stream, or lines the window
+// sends), stepped at a fixed rate. It counts what the report needs, keeps each step's events for the caller to
+// log or show, and can record the first fighter on the starting character. After construction a step allocates
+// nothing unless recording (the recording grows).
+
+#include "kumite/formats/bvh_reader.h"
+#include "kumite/runtime/fighter.h"
+#include "kumite/runtime/head_tracker.h"
+#include "kumite/runtime/supervisor.h"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace kumite {
+
+struct BoutCharacter {
+    std::string name;
+    BvhFile file; // its first frame is the rest pose
+};
+
+struct BoutOptions {
+    int fighters = 1;
+    int start_character = 0; // index into the characters
+    double lead_s = 0.4;     // strikes start at least this long before their contact (a sparring partner telegraphs)
+    double rate_hz = 60.0;
+    bool record = false;
+    FighterSettings fighter;
+};
+
+struct BoutEvent {
+    int fighter = 0;
+    FighterEvent event;
+};
+
+struct BoutCounters {
+    long long frames = 0, missed_frames = 0;
+    long long orders = 0, strikes = 0, hits = 0, misses = 0, ignored_orders = 0;
+    std::vector<double> frame_us;               // every frame's cost (reserve: see Bout)
+    std::vector<double> command_to_strike_frames;
+    double last_contact_error_m = -1.0;         // of the last strike; -1 before any
+    bool last_hit = false;
+};
+
+class Bout {
+public:
+    static Result<std::unique_ptr<Bout>> create(const MotionDatabaseView& database, std::vector<BoutCharacter> characters,
+                                                std::unique_ptr<HeadTracker> tracker, const BoutOptions& options);
+    ~Bout();
+    Bout(const Bout&) = delete;
+    Bout& operator=(const Bout&) = delete;
+
+    void set_script(CommandScript script) { m_script = std::move(script), m_has_script = true; }
+    void set_stream(std::unique_ptr<CommandStream> stream) { m_stream = std::move(stream); }
+    // Where messages go (bad command lines when there is no stream to answer); default: ignored.
+    void set_message_handler(std::function<void(std::string_view)> handler) { m_message = std::move(handler); }
+
+    // A supervisor line, applied at the next step. Returns the error (unknown verb or character) or nothing.
+    Result<void> command(std::string_view line);
+
+    // One frame at time t: commands due, the head, every fighter. Afterwards events() holds this frame's events.
+    void step(double t_s);
+
+    std::span<const BoutEvent> events() const { return m_events; }
+    const BoutCounters& counters() const { return m_counters; }
+    bool quit_requested() const { return m_quit; }
+    double rate_hz() const { return m_options.rate_hz; }
+    bool live() const { return m_tracker->live(); }
+    const HeadTracker& tracker() const { return *m_tracker; }
+    const Eigen::Vector3d* head() const { return m_have_head ? &m_head : nullptr; } // as of the last step
+
+    int fighter_count() const { return static_cast<int>(m_fighters.size()); }
+    const Fighter& fighter(int index) const { return *m_fighters[index]; }
+    // Fighters index characters from the starting one on; this names and shapes them in that order.
+    const std::string& character_name(int fighter_character) const;
+    const Skeleton& character_skeleton(int fighter_character) const;
+    int character_count() const { return static_cast<int>(m_characters.size()); }
+    const MotionDatabaseView& database() const { return m_db; }
+    const Retriever& retriever() const { return *m_retriever; }
+
+    // The first fighter on the starting character, one frame per step (when options.record).
+    const Clip& recording() const { return m_recording; }
+    const BvhFile& starting_character_file() const;
+
+private:
+    Bout() = default;
+    struct Character;
+    int fighter_character_of(const std::string& name) const;
+    void apply(std::string_view line, const std::string& where);
+
+    MotionDatabaseView m_db;
+    BoutOptions m_options;
+    std::vector<std::unique_ptr<Character>> m_characters;
+    std::unique_ptr<Retriever> m_retriever;
+    std::vector<std::unique_ptr<Fighter>> m_fighters;
+    std::unique_ptr<HeadTracker> m_tracker;
+    CommandScript m_script;
+    bool m_has_script = false;
+    std::unique_ptr<CommandStream> m_stream;
+    std::function<void(std::string_view)> m_message;
+    std::vector<std::string> m_queued; // lines from command()
+    std::vector<BoutEvent> m_events;
+    std::vector<long long> m_order_frame;
+    BoutCounters m_counters;
+    bool m_quit = false;
+    bool m_have_head = false;
+    Eigen::Vector3d m_head = Eigen::Vector3d::Zero();
+    double m_now_s = 0.0;
+    std::unique_ptr<MirDecoder> m_record_decoder;
+    Pose m_record_pose;
+    Clip m_recording;
+};
+
+} // namespace kumite

@@ -1,0 +1,42 @@
+#pragma once
+// The user's head, from whichever source the room has (ARCHITECTURE.md "Inputs from the room"), behind one
+// interface: `dtrack:PORT[:BODY]` (A.R.T. DTrack UDP, live), `replay:FILE` (a CSV of t,x,y,z), or
+// `simulate:still|wander|dodge|FILE` (a simulated or scripted user, deterministic with the seed).
+
+#include "kumite/runtime/dtrack_receiver.h"
+#include "kumite/runtime/replay_track.h"
+#include "kumite/runtime/simulated_user.h"
+
+#include <memory>
+#include <optional>
+#include <string_view>
+
+namespace kumite {
+
+class HeadTracker {
+public:
+    // `config` is used by dtrack: its port and head body are replaced by those in the spec. Errors say what is
+    // wrong with the spec (ErrorCode::invalid) or the file or socket (io, parse).
+    static Result<std::unique_ptr<HeadTracker>> open(std::string_view spec, DtrackConfig config, std::uint64_t seed);
+
+    // The head this frame (world metres), or null when the source has none (untracked, silent, a replay gap).
+    // A live source answers only when a fresh sample arrived, so silence reaches the fighter.
+    const Eigen::Vector3d* head(double t_s);
+    // A supervisor order went out at t: simulated users that dodge react to it.
+    void on_order(double t_s);
+
+    bool live() const { return m_receiver != nullptr; } // steps on the wall clock
+    long long packets() const { return m_receiver ? m_receiver->stats().packets : 0; }
+    long long rejected() const { return m_receiver ? m_receiver->stats().rejected() : 0; }
+
+private:
+    HeadTracker() = default;
+    std::optional<SimulatedUser> m_simulated;
+    std::optional<ScriptedUser> m_scripted;
+    std::optional<ReplayTrack> m_replay;
+    std::unique_ptr<DtrackReceiver> m_receiver;
+    HeadSample m_sample;
+    Eigen::Vector3d m_head = Eigen::Vector3d::Zero();
+};
+
+} // namespace kumite

@@ -1,0 +1,171 @@
+#include "kumite/runtime/bout.h"
+
+#include <chrono>
+
+namespace kumite {
+
+struct Bout::Character {
+    std::string name;
+    BvhFile file;
+    RestAnatomy anatomy;
+    std::unique_ptr<CharacterRig> rig;
+};
+
+Bout::~Bout() = default;
+
+Result<std::unique_ptr<Bout>> Bout::create(const MotionDatabaseView& database, std::vector<BoutCharacter> characters,
+                                           std::unique_ptr<HeadTracker> tracker, const BoutOptions& options) {
+    if (characters.empty()) return make_error(ErrorCode::invalid, "a bout needs at least one character");
+    if (options.start_character < 0 || options.start_character >= int(characters.size())) return make_error(ErrorCode::invalid, "no such starting character");
+    if (options.fighters < 1) return make_error(ErrorCode::invalid, "a bout needs at least one fighter");
+    if (!tracker) return make_error(ErrorCode::invalid, "a bout needs a head tracker");
+    std::unique_ptr<Bout> bout(new Bout());
+    bout->m_db = database;
+    bout->m_options = options;
+    bout->m_tracker = std::move(tracker);
+    for (BoutCharacter& given : characters) {
+        auto character = std::make_unique<Character>();
+        character->name = std::move(given.name);
+        character->file = std::move(given.file);
+        Result<RestAnatomy> anatomy = rest_anatomy_build(character->file.clip, character->file.body_map);
+        if (!anatomy) return make_error(anatomy.error().code, "character " + character->name + ": " + anatomy.error().message);
+        character->anatomy = std::move(*anatomy);
+        character->rig = std::make_unique<CharacterRig>(character->file.clip.skeleton, character->anatomy);
+        bout->m_characters.push_back(std::move(character));
+    }
+    std::vector<CharacterRig*> rigs;
+    const int count = int(bout->m_characters.size());
+    for (int i = 0; i < count; ++i) rigs.push_back(bout->m_characters[(options.start_character + i) % count]->rig.get());
+
+    RetrievalSettings retrieval_settings;
+    retrieval_settings.min_lead_frames = std::max(1, int(std::lround(options.lead_s / database.meta.frame_time_s)));
+    bout->m_retriever = std::make_unique<Retriever>(database, retrieval_settings);
+    for (int i = 0; i < options.fighters; ++i) {
+        FighterSettings settings = options.fighter;
+        settings.rate_hz = options.rate_hz;
+        settings.start_x_m = (double(i) - 0.5 * double(options.fighters - 1)) * 1.2;
+        bout->m_fighters.push_back(std::make_unique<Fighter>(database, *bout->m_retriever, rigs, settings));
+    }
+    bout->m_events.reserve(std::size_t(options.fighters) * 64);
+    bout->m_order_frame.assign(std::size_t(options.fighters), -1);
+    bout->m_queued.reserve(16);
+    bout->m_counters.frame_us.reserve(1 << 16);
+    bout->m_counters.command_to_strike_frames.reserve(1024);
+    if (options.record) {
+        const Character& start = *bout->m_characters[options.start_character];
+        bout->m_record_decoder = std::make_unique<MirDecoder>(start.file.clip.skeleton, start.anatomy, std::span<const std::string>{});
+        bout->m_recording.skeleton = start.file.clip.skeleton;
+        bout->m_recording.frame_time_s = 1.0 / options.rate_hz;
+    }
+    return bout;
+}
+
+const std::string& Bout::character_name(int fighter_character) const {
+    return m_characters[(m_options.start_character + fighter_character) % m_characters.size()]->name;
+}
+
+const Skeleton& Bout::character_skeleton(int fighter_character) const {
+    return m_characters[(m_options.start_character + fighter_character) % m_characters.size()]->file.clip.skeleton;
+}
+
+const BvhFile& Bout::starting_character_file() const { return m_characters[m_options.start_character]->file; }
+
+int Bout::fighter_character_of(const std::string& name) const {
+    for (int i = 0; i < character_count(); ++i) {
+        if (character_name(i) == name) return i;
+    }
+    return -1;
+}
+
+Result<void> Bout::command(std::string_view line) {
+    Result<SupervisorCommand> parsed = supervisor_command_parse(line);
+    if (!parsed) return parsed.error();
+    if (parsed->verb == SupervisorCommand::Verb::character && fighter_character_of(parsed->argument) < 0) {
+        return make_error(ErrorCode::invalid, "unknown character '" + parsed->argument + "'");
+    }
+    m_queued.emplace_back(line);
+    return {};
+}
+
+void Bout::apply(std::string_view line, const std::string& where) {
+    Result<SupervisorCommand> command = supervisor_command_parse(line);
+    if (command && command->verb == SupervisorCommand::Verb::character && fighter_character_of(command->argument) < 0) {
+        command = make_error(ErrorCode::invalid, "unknown character '" + command->argument + "'");
+    }
+    if (!command) {
+        const std::string message = "error: " + where + command.error().message + "; ignored\n";
+        if (m_stream) m_stream->reply(message);
+        else if (m_message) m_message(message);
+        return;
+    }
+    switch (command->verb) {
+    case SupervisorCommand::Verb::punch:
+    case SupervisorCommand::Verb::kick: {
+        const Side side = command->side == "left" ? Side::left : command->side == "right" ? Side::right : Side::none;
+        m_tracker->on_order(m_now_s);
+        const int semantics = m_retriever->semantics_id(command->verb == SupervisorCommand::Verb::punch ? "punch" : "kick");
+        for (auto& fighter : m_fighters) fighter->order(semantics, side);
+        break;
+    }
+    case SupervisorCommand::Verb::character: {
+        const int index = fighter_character_of(command->argument);
+        for (auto& fighter : m_fighters) fighter->set_character(index);
+        break;
+    }
+    case SupervisorCommand::Verb::quit: m_quit = true; break;
+    }
+}
+
+void Bout::step(double t_s) {
+    const auto started = std::chrono::steady_clock::now();
+    m_now_s = t_s;
+    m_events.clear();
+    const Eigen::Vector3d* head = m_tracker->head(t_s);
+    m_have_head = head != nullptr;
+    if (head) m_head = *head;
+    if (m_has_script) m_script.due(t_s, [&](const CommandScript::Line& line) { apply(line.command, "line " + std::to_string(line.line) + ": "); });
+    if (m_stream) m_stream->poll([&](std::string_view line) { apply(line, ""); });
+    for (const std::string& line : m_queued) apply(line, "");
+    m_queued.clear();
+
+    const long long frame = m_counters.frames;
+    for (std::size_t f = 0; f < m_fighters.size(); ++f) {
+        Fighter& fighter = *m_fighters[f];
+        fighter.step(t_s, m_have_head ? &m_head : nullptr);
+        for (const FighterEvent& event : fighter.events()) {
+            switch (event.type) {
+            case FighterEvent::Type::order:
+                ++m_counters.orders;
+                m_order_frame[f] = frame;
+                break;
+            case FighterEvent::Type::ignored_order: ++m_counters.ignored_orders; break;
+            case FighterEvent::Type::state:
+                if (event.state == FighterState::strike && m_order_frame[f] >= 0) {
+                    m_counters.command_to_strike_frames.push_back(double(frame - m_order_frame[f]));
+                    m_order_frame[f] = -1;
+                }
+                break;
+            case FighterEvent::Type::strike:
+                ++m_counters.strikes;
+                (event.hit ? m_counters.hits : m_counters.misses) += 1;
+                m_counters.last_contact_error_m = event.contact_error_m;
+                m_counters.last_hit = event.hit;
+                break;
+            default: break;
+            }
+            if (m_events.size() < m_events.capacity()) m_events.push_back({int(f), event});
+        }
+        fighter.clear_events();
+    }
+    if (m_record_decoder) {
+        m_record_decoder->decode(m_record_pose, m_fighters[0]->mir());
+        m_recording.root_translations.push_back(m_record_pose.root_translation);
+        m_recording.local_rotations.insert(m_recording.local_rotations.end(), m_record_pose.local_rotations.begin(), m_record_pose.local_rotations.end());
+    }
+    ++m_counters.frames;
+    const double elapsed_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started).count();
+    m_counters.frame_us.push_back(elapsed_us);
+    m_counters.missed_frames += elapsed_us > 1e6 / m_options.rate_hz;
+}
+
+} // namespace kumite

@@ -1,0 +1,69 @@
+#include "kumite/runtime/head_tracker.h"
+
+#include <cstdio>
+#include <filesystem>
+
+namespace kumite {
+
+Result<std::unique_ptr<HeadTracker>> HeadTracker::open(std::string_view spec_view, DtrackConfig config, std::uint64_t seed) {
+    const std::string spec(spec_view);
+    std::unique_ptr<HeadTracker> tracker(new HeadTracker());
+    if (spec.starts_with("simulate:")) {
+        const std::string name = spec.substr(9);
+        if (const std::optional<SimulatedKind> kind = simulated_kind_from_name(name)) {
+            tracker->m_simulated.emplace(*kind, seed);
+        } else if (std::filesystem::is_regular_file(name)) {
+            Result<ScriptedUser> read = ScriptedUser::read(name);
+            if (!read) return read.error();
+            tracker->m_scripted = std::move(*read);
+        } else {
+            return make_error(ErrorCode::invalid, "--tracker simulate: takes still, wander, dodge or a user script file, not '" + name + "'");
+        }
+    } else if (spec.starts_with("dtrack:")) {
+        int port = 0, body = config.head_body;
+        char extra = 0;
+        const int fields = std::sscanf(spec.c_str() + 7, "%d:%d%c", &port, &body, &extra);
+        if (fields < 1 || fields > 2 || port <= 0 || port > 65535) return make_error(ErrorCode::invalid, "--tracker dtrack:PORT[:BODY], not '" + spec + "'");
+        config.port = port;
+        if (fields == 2) config.head_body = body;
+        Result<std::unique_ptr<DtrackReceiver>> opened = DtrackReceiver::open(config);
+        if (!opened) return opened.error();
+        tracker->m_receiver = std::move(*opened);
+    } else if (spec.starts_with("replay:")) {
+        Result<ReplayTrack> read = ReplayTrack::read(spec.substr(7));
+        if (!read) return read.error();
+        tracker->m_replay = std::move(*read);
+    } else {
+        return make_error(ErrorCode::invalid, "--tracker must be dtrack:PORT[:BODY], replay:FILE or simulate:still|wander|dodge|FILE, not '" + spec + "'");
+    }
+    return tracker;
+}
+
+const Eigen::Vector3d* HeadTracker::head(double t_s) {
+    if (m_simulated) {
+        m_head = m_simulated->head(t_s);
+        return &m_head;
+    }
+    if (m_scripted) {
+        m_head = m_scripted->head(t_s);
+        return &m_head;
+    }
+    if (m_replay) {
+        const std::optional<Eigen::Vector3d> replayed = m_replay->head(t_s);
+        if (!replayed) return nullptr;
+        m_head = *replayed;
+        return &m_head;
+    }
+    if (m_receiver && m_receiver->poll(m_sample, t_s)) {
+        m_head = m_sample.position_world;
+        return &m_head;
+    }
+    return nullptr;
+}
+
+void HeadTracker::on_order(double t_s) {
+    if (m_simulated) m_simulated->on_order(t_s);
+    if (m_scripted) m_scripted->on_order(t_s);
+}
+
+} // namespace kumite
