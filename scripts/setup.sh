@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Installs the Debian packages kumite needs, only those missing. Safe to run again.
 #   scripts/setup.sh          build dependencies
-#   scripts/setup.sh --test   also what the tests use (Blender for the BVH import check, clang for fuzzing)
+#   scripts/setup.sh --test   also what the tests use (Blender for the BVH import check, clang for fuzzing,
+#                             Xvfb and Mesa for the viewer checks)
 set -euo pipefail
 
-packages=(build-essential cmake g++ libeigen3-dev nlohmann-json3-dev catch2 python3 libopenexr-dev libflann-dev)
+packages=(build-essential cmake g++ libeigen3-dev nlohmann-json3-dev catch2 python3 libopenexr-dev libflann-dev
+          qt6-base-dev qt6-qpa-plugins libqt6opengl6-dev libgl-dev libxkbcommon-dev fonts-dejavu-core)
 if [[ "${1:-}" == "--test" ]]; then
-  packages+=(blender clang-14 libfuzzer-14-dev openexr)
+  packages+=(blender clang-14 libfuzzer-14-dev openexr xvfb xauth libgl1-mesa-dri)
 fi
 
 missing=()

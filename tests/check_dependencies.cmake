@@ -1,5 +1,5 @@
 # Enforces the one direction core <- formats <- runtime <- authoring and keeps Qt and OpenEXR out of the
-# engine-facing libraries. Run as: cmake -DSOURCE_DIR=<repo> -P check_dependencies.cmake
+# engine-facing libraries (the player's window in runtime/player may use Qt). Run as: cmake -DSOURCE_DIR=<repo> -P check_dependencies.cmake
 # (registered as the ctest "dependencies: one direction, no Qt or OpenEXR in core/formats/runtime").
 
 set(failures "")
@@ -21,8 +21,12 @@ check_folder(core "[<\"](Q[A-Za-z]+|Imf[A-Za-z]*|OpenEXR/|kumite/formats/|kumite
   "core uses Eigen and the standard library only")
 check_folder(formats "[<\"](Q[A-Za-z]+|kumite/runtime/|kumite/authoring/)"
   "formats depends on core only; no Qt")
-check_folder(runtime "[<\"](Q[A-Za-z]+|Imf[A-Za-z]*|OpenEXR/|kumite/authoring/)"
+check_folder(runtime/include "[<\"](Q[A-Za-z]+|Imf[A-Za-z]*|OpenEXR/|kumite/authoring/)"
   "libkumite_runtime has no Qt and no OpenEXR")
+check_folder(runtime/src "[<\"](Q[A-Za-z]+|Imf[A-Za-z]*|OpenEXR/|kumite/authoring/)"
+  "libkumite_runtime has no Qt and no OpenEXR")
+check_folder(runtime/player "[<\"](Imf[A-Za-z]*|OpenEXR/|kumite/authoring/)"
+  "the player's window may use Qt, never authoring or OpenEXR")
 
 if(failures)
   message(FATAL_ERROR "dependency rule broken:${failures}")

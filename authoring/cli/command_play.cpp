@@ -1,5 +1,6 @@
-// kumite play: the fighter against a tracked (or simulated) user, driven by supervisor commands. Headless for now:
-// a simulated clock (as fast as possible, deterministic with --seed) unless --realtime or a live tracker.
+// kumite play: the fighter against a tracked (or simulated) user, driven by supervisor commands. In the viewer when
+// a display is present and --headless is not given (on the wall clock); headless on a simulated clock (as fast as
+// possible, deterministic with --seed) unless --realtime or a live tracker.
 
 #include "capture_loading.h"
 #include "character_catalog.h"
@@ -9,11 +10,8 @@
 #include "kumite/formats/atomic_file.h"
 #include "kumite/formats/bvh_writer.h"
 #include "kumite/formats/motion_database_file.h"
-#include "kumite/runtime/dtrack_receiver.h"
-#include "kumite/runtime/fighter.h"
-#include "kumite/runtime/replay_track.h"
-#include "kumite/runtime/simulated_user.h"
-#include "kumite/runtime/supervisor.h"
+#include "kumite/runtime/bout.h"
+#include "player_window.h"
 
 #include <algorithm>
 #include <chrono>
@@ -28,13 +26,14 @@ const CommandSpec& play_spec() {
     static const CommandSpec spec{
         "play",
         "DB.kdb [--character NAME] [--fighters N] [--tracker dtrack:PORT[:BODY] | replay:FILE | simulate:still|wander|dodge|FILE] "
-        "[--commands stdin | tcp:PORT | script:FILE] --headless [--duration S] [--realtime] [--seed N] [--record OUT.bvh] "
+        "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] [--record OUT.bvh] "
         "[--events OUT.jsonl] [--report OUT.json]",
         "Runs the fighter at 60 Hz against the user's head (a DTrack system, a replayed CSV of t,x,y,z, or a\n"
         "simulated user) and the supervisor's commands, one per line: punch [left|right], kick [left|right],\n"
         "character NAME, quit (in a script file, each line starts with its time in seconds; on stdin or TCP on\n"
         "127.0.0.1 they apply when they arrive). Headless runs use a simulated clock unless --realtime or the\n"
-        "tracker is live. (The viewer arrives later.)",
+        "tracker is live. With a display and without --headless the viewer opens (keys listed on screen; it runs until\n"
+        "closed, or for --duration when given).",
         1, 1,
         {{"character", "NAME", "the starting character (default: the first of data/characters)"},
          {"fighters", "N", "fighters side by side against the same user (default 1)"},
@@ -42,6 +41,8 @@ const CommandSpec& play_spec() {
          {"tracker-config", "FILE.json", "the room: bind address, room-to-world transform, room bounds (dtrack)"},
          {"commands", "SOURCE", "stdin, tcp:PORT (127.0.0.1) or script:FILE ('<time_s> <command>' per line)"},
          {"headless", "", "no window"},
+         {"screenshot", "OUT.png", "viewer: save the window after --duration seconds and close"},
+         {"viewer-config", "FILE.json", "the wall screen's corners, the eye separation, stereo and camera mode (see runtime/player/README.md)"},
          {"duration", "S", "seconds to run (default 30)"},
          {"realtime", "", "step on the wall clock"},
          {"seed", "N", "seed of the simulated user (default 1)"},
@@ -55,34 +56,6 @@ const CommandSpec& play_spec() {
 
 namespace {
 
-struct ScriptLine {
-    double t_s = 0.0;
-    std::string command;
-    int line = 0;
-};
-
-Result<std::vector<ScriptLine>> read_script(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) return make_error(ErrorCode::io, path + ": cannot read the command script");
-    std::vector<ScriptLine> lines;
-    std::string text;
-    for (int number = 1; std::getline(in, text); ++number) {
-        if (!text.empty() && text.back() == '\r') text.pop_back();
-        const std::size_t first = text.find_first_not_of(" \t");
-        if (first == std::string::npos || text[first] == '#') continue;
-        std::istringstream stream(text);
-        ScriptLine line;
-        line.line = number;
-        if (!(stream >> line.t_s) || !std::isfinite(line.t_s) || line.t_s < 0) {
-            return make_error(ErrorCode::invalid, path + ":" + std::to_string(number) + ": expected '<time_s> <command>'");
-        }
-        std::getline(stream >> std::ws, line.command);
-        lines.push_back(line);
-    }
-    std::stable_sort(lines.begin(), lines.end(), [](const ScriptLine& a, const ScriptLine& b) { return a.t_s < b.t_s; });
-    return lines;
-}
-
 nlohmann::json summary_of(std::vector<double> values) {
     if (values.empty()) return {{"mean", 0.0}, {"p99", 0.0}, {"max", 0.0}};
     std::sort(values.begin(), values.end());
@@ -93,21 +66,71 @@ nlohmann::json summary_of(std::vector<double> values) {
 
 const char* side_text(Side side) { return side == Side::left ? "left" : side == Side::right ? "right" : "any"; }
 
+bool display_present() {
+    const char* x11 = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    return (x11 && *x11) || (wayland && *wayland);
+}
+
 } // namespace
+
+nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
+    const FighterEvent& event = bout_event.event;
+    nlohmann::json line = {{"t", event.t_s}, {"type", fighter_event_name(event.type)}, {"fighter", bout_event.fighter}};
+    const Retriever& retriever = bout.retriever();
+    switch (event.type) {
+    case FighterEvent::Type::order:
+        line["command"] = retriever.semantics_name(event.semantics);
+        line["side"] = side_text(event.side);
+        break;
+    case FighterEvent::Type::ignored_order: line["why"] = event.why; break;
+    case FighterEvent::Type::state: line["state"] = fighter_state_name(event.state); break;
+    case FighterEvent::Type::strike:
+        line["result"] = event.hit ? "hit" : "miss";
+        line["contact_error_m"] = event.contact_error_m;
+        line["head_distance_m"] = event.head_distance_m;
+        line["range_m"] = event.range_m;
+        line["clip"] = bout.database().string(bout.database().clips[event.clip].name);
+        break;
+    case FighterEvent::Type::character: line["character"] = bout.character_name(event.character); break;
+    default: break;
+    }
+    return line;
+}
+
+nlohmann::json play_report_json(const Bout& bout) {
+    const BoutCounters& counters = bout.counters();
+    double mean_latency = 0.0, max_latency = 0.0;
+    for (double v : counters.command_to_strike_frames) {
+        mean_latency += v / double(counters.command_to_strike_frames.size());
+        max_latency = std::max(max_latency, v);
+    }
+    return {{"frames", counters.frames},
+            {"fighters", bout.fighter_count()},
+            {"frame_time_us", summary_of(counters.frame_us)},
+            {"missed_frames", counters.missed_frames},
+            {"orders", counters.orders},
+            {"strikes", counters.strikes},
+            {"hits", counters.hits},
+            {"misses", counters.misses},
+            {"ignored_orders", counters.ignored_orders},
+            {"tracker_packets", bout.tracker().packets()},
+            {"tracker_rejected", bout.tracker().rejected()},
+            {"command_to_strike_frames", {{"max", max_latency}, {"mean", mean_latency}}}};
+}
 
 int run_play(int argc, char** argv) {
     Arguments arguments;
     if (std::optional<int> status = parse_command_line(play_spec(), argc, argv, arguments)) return *status;
-    if (!arguments.has("headless")) return usage_error(play_spec(), "the viewer is not built yet: run with --headless");
     const Result<long long> fighters_count = arguments.integer("fighters", 1, 10000, 1);
     const Result<long long> seed = arguments.integer("seed", 0, 1LL << 62, 1);
     if (!fighters_count) return usage_error(play_spec(), fighters_count.error().message);
     if (!seed) return usage_error(play_spec(), seed.error().message);
-    std::optional<double> lead_s = 0.4;
+    double lead_s = 0.4;
     if (const std::optional<std::string> text = arguments.value("lead")) {
         char* end = nullptr;
         lead_s = std::strtod(text->c_str(), &end);
-        if (end == text->c_str() || *end != '\0' || !(*lead_s >= 0.0) || *lead_s > 5.0) return usage_error(play_spec(), "--lead must be 0 to 5 seconds");
+        if (end == text->c_str() || *end != '\0' || !(lead_s >= 0.0) || lead_s > 5.0) return usage_error(play_spec(), "--lead must be 0 to 5 seconds");
     }
     double duration_s = 30.0;
     if (const std::optional<std::string> text = arguments.value("duration")) {
@@ -117,51 +140,35 @@ int run_play(int argc, char** argv) {
             return usage_error(play_spec(), "--duration must be seconds, more than 0, not '" + *text + "'");
         }
     }
-    // The tracker.
-    const std::string tracker = arguments.value("tracker").value_or("simulate:still");
-    std::optional<SimulatedUser> simulated;
-    std::optional<ScriptedUser> scripted;
-    std::optional<ReplayTrack> replay;
-    std::unique_ptr<DtrackReceiver> receiver;
-    if (tracker.starts_with("simulate:")) {
-        const std::string name = tracker.substr(9);
-        if (const std::optional<SimulatedKind> kind = simulated_kind_from_name(name)) {
-            simulated.emplace(*kind, static_cast<std::uint64_t>(*seed));
-        } else if (std::filesystem::exists(name)) {
-            Result<ScriptedUser> read = ScriptedUser::read(name);
-            if (!read) return input_error(read.error().message);
-            scripted = std::move(*read);
-        } else {
-            return usage_error(play_spec(), "--tracker simulate: takes still, wander, dodge or a user script file, not '" + name + "'");
-        }
-    } else if (tracker.starts_with("dtrack:")) {
-        DtrackConfig config;
-        if (const std::optional<std::string> file = arguments.value("tracker-config")) {
-            Result<DtrackConfig> read = dtrack_config_read(*file);
-            if (!read) return input_error(read.error().message);
-            config = *read;
-        }
-        int port = 0, body = config.head_body;
-        char extra = 0;
-        const int fields = std::sscanf(tracker.c_str() + 7, "%d:%d%c", &port, &body, &extra);
-        if (fields < 1 || fields > 2 || port <= 0 || port > 65535) return usage_error(play_spec(), "--tracker dtrack:PORT[:BODY], not '" + tracker + "'");
-        config.port = port;
-        config.head_body = fields == 2 ? body : config.head_body;
-        Result<std::unique_ptr<DtrackReceiver>> opened = DtrackReceiver::open(config);
-        if (!opened) return input_error(opened.error().message);
-        receiver = std::move(*opened);
-    } else if (tracker.starts_with("replay:")) {
-        Result<ReplayTrack> read = ReplayTrack::read(tracker.substr(7));
-        if (!read) return input_error(read.error().message);
-        replay = std::move(*read);
-    } else {
-        return usage_error(play_spec(), "--tracker must be dtrack:PORT[:BODY], replay:FILE or simulate:still|wander|dodge");
+    const bool want_viewer = !arguments.has("headless");
+    if (want_viewer && !display_present()) {
+        std::cerr << "kumite play: no display (DISPLAY and WAYLAND_DISPLAY are unset): running headless\n";
     }
-    std::vector<ScriptLine> script;
+    const bool viewer = want_viewer && display_present();
+    view::ViewerSettings viewer_settings;
+    if (const std::optional<std::string> file = arguments.value("viewer-config")) {
+        Result<view::ViewerSettings> read = view::viewer_settings_read(*file);
+        if (!read) return input_error(read.error().message);
+        viewer_settings = *read;
+    }
+
+    // The tracker.
+    DtrackConfig dtrack_config;
+    if (const std::optional<std::string> file = arguments.value("tracker-config")) {
+        Result<DtrackConfig> read = dtrack_config_read(*file);
+        if (!read) return input_error(read.error().message);
+        dtrack_config = *read;
+    }
+    Result<std::unique_ptr<HeadTracker>> tracker =
+        HeadTracker::open(arguments.value("tracker").value_or("simulate:still"), dtrack_config, static_cast<std::uint64_t>(*seed));
+    if (!tracker) {
+        return tracker.error().code == ErrorCode::invalid ? usage_error(play_spec(), tracker.error().message) : input_error(tracker.error().message);
+    }
+    std::optional<CommandScript> script;
     std::unique_ptr<CommandStream> stream;
     if (const std::optional<std::string> commands = arguments.value("commands")) {
         if (commands->starts_with("script:")) {
-            Result<std::vector<ScriptLine>> read = read_script(commands->substr(7));
+            Result<CommandScript> read = CommandScript::read(commands->substr(7));
             if (!read) return input_error(read.error().message);
             script = std::move(*read);
         } else if (*commands == "stdin" || commands->starts_with("tcp:")) {
@@ -177,50 +184,30 @@ int run_play(int argc, char** argv) {
     // The database and every character (any of them can be switched to).
     Result<MotionDatabase> database = MotionDatabase::open(arguments.positionals[0]);
     if (!database) return input_error(database.error().message);
-    const MotionDatabaseView& db = database->view();
     const std::optional<std::string> folder = arguments.value("characters-dir");
     const std::filesystem::path characters_dir = folder ? std::filesystem::path(*folder) : default_characters_dir();
     std::vector<CharacterEntry> entries = list_characters(characters_dir);
     if (entries.empty()) return input_error(characters_dir.string() + ": no characters");
-    std::vector<BvhFile> files;
-    std::vector<RestAnatomy> anatomies;
-    files.reserve(entries.size());
-    anatomies.reserve(entries.size());
-    std::vector<std::unique_ptr<CharacterRig>> rigs;
-    int start_character = 0;
     const std::string wanted = arguments.value("character").value_or(entries[0].name);
-    bool known = false;
+    BoutOptions options;
+    options.fighters = static_cast<int>(*fighters_count);
+    options.lead_s = lead_s;
+    options.record = arguments.value("record").has_value();
+    options.start_character = -1;
+    std::vector<BoutCharacter> characters;
     for (std::size_t i = 0; i < entries.size(); ++i) {
         Result<BvhFile> file = load_character(characters_dir, entries[i].name);
         if (!file) return input_error(file.error().message);
-        files.push_back(std::move(*file));
-        Result<RestAnatomy> anatomy = rest_anatomy_build(files.back().clip, files.back().body_map);
-        if (!anatomy) return input_error("character " + entries[i].name + ": " + anatomy.error().message);
-        anatomies.push_back(std::move(*anatomy));
-        rigs.push_back(std::make_unique<CharacterRig>(files.back().clip.skeleton, anatomies.back()));
-        if (entries[i].name == wanted) start_character = static_cast<int>(i), known = true;
+        characters.push_back({entries[i].name, std::move(*file)});
+        if (entries[i].name == wanted) options.start_character = static_cast<int>(i);
     }
-    if (!known) return usage_error(play_spec(), "unknown character '" + wanted + "' (see kumite characters)");
-    std::vector<CharacterRig*> order_of_rigs;
-    for (int i = 0; i < static_cast<int>(rigs.size()); ++i) order_of_rigs.push_back(rigs[(start_character + i) % rigs.size()].get());
-    auto rig_index = [&](const std::string& name) {
-        for (int i = 0; i < static_cast<int>(entries.size()); ++i) {
-            if (entries[(start_character + i) % entries.size()].name == name) return i;
-        }
-        return -1;
-    };
-
-    // A sparring partner telegraphs: strikes start at least --lead seconds before their contact, so a user has
-    // time to see them coming (0.4 s: a still user is hit, one who dodges 0.25 s after the order is missed).
-    RetrievalSettings retrieval_settings;
-    retrieval_settings.min_lead_frames = std::max(1, static_cast<int>(std::lround(*lead_s / db.meta.frame_time_s)));
-    const Retriever retriever(db, retrieval_settings);
-    std::vector<std::unique_ptr<Fighter>> fighters;
-    for (long long i = 0; i < *fighters_count; ++i) {
-        FighterSettings settings;
-        settings.start_x_m = (static_cast<double>(i) - 0.5 * double(*fighters_count - 1)) * 1.2;
-        fighters.push_back(std::make_unique<Fighter>(db, retriever, order_of_rigs, settings));
-    }
+    if (options.start_character < 0) return usage_error(play_spec(), "unknown character '" + wanted + "' (see kumite characters)");
+    Result<std::unique_ptr<Bout>> created = Bout::create(database->view(), std::move(characters), std::move(*tracker), options);
+    if (!created) return input_error(created.error().message);
+    Bout& bout = **created;
+    if (script) bout.set_script(std::move(*script));
+    if (stream) bout.set_stream(std::move(stream));
+    bout.set_message_handler([](std::string_view message) { std::cerr << "kumite play: " << message; });
 
     std::ofstream events_out;
     const std::optional<std::string> events_path = arguments.value("events");
@@ -229,136 +216,29 @@ int run_play(int argc, char** argv) {
         events_out.open(events_temporary);
         if (!events_out) return input_error(*events_path + ": cannot write the events file");
     }
-    auto write_event = [&](const nlohmann::json& event) {
-        if (events_out.is_open()) events_out << event.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+    auto after_step = [&] {
+        if (!events_out.is_open()) return;
+        for (const BoutEvent& event : bout.events()) {
+            events_out << play_event_json(bout, event).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+        }
     };
 
-    // The recording: the first fighter's MIR decoded on the starting character.
-    const Skeleton& record_skeleton = files[start_character].clip.skeleton;
-    MirDecoder record_decoder(record_skeleton, anatomies[start_character], {});
-    Clip record;
-    record.skeleton = record_skeleton;
-    constexpr double rate_hz = 60.0;
-    record.frame_time_s = 1.0 / rate_hz;
-    Pose record_pose;
-
-    const bool realtime = arguments.has("realtime") || receiver != nullptr;
-    const long long frames = static_cast<long long>(std::llround(duration_s * rate_hz));
-    std::vector<double> frame_us;
-    long long missed = 0, orders = 0, strikes = 0, hits = 0, misses = 0, ignored = 0;
-    std::vector<double> command_to_strike;
-    std::vector<long long> order_frame(fighters.size(), -1);
-    std::size_t next_command = 0;
-    HeadSample head_sample;
-    const auto wall_start = std::chrono::steady_clock::now();
-    long long frame = 0;
-    for (; frame < frames; ++frame) {
-        const double t = frame / rate_hz;
-        if (realtime) std::this_thread::sleep_until(wall_start + std::chrono::duration<double>(t));
-        const auto started = std::chrono::steady_clock::now();
-        // The head.
-        Eigen::Vector3d head;
-        const Eigen::Vector3d* head_now = nullptr;
-        if (simulated) {
-            head = simulated->head(t);
-            head_now = &head;
-        } else if (scripted) {
-            head = scripted->head(t);
-            head_now = &head;
-        } else if (replay) {
-            if (const std::optional<Eigen::Vector3d> replayed = replay->head(t)) {
-                head = *replayed;
-                head_now = &head;
-            }
-        } else if (receiver && receiver->poll(head_sample, t)) { // only a fresh head: silence must reach the fighter
-            head = head_sample.position_world;
-            head_now = &head;
-        }
-        // Commands due: from the script, or whatever arrived on the stream.
-        bool quit = false;
-        auto apply = [&](std::string_view line, const std::string& where) {
-            Result<SupervisorCommand> command = supervisor_command_parse(line);
-            if (command && command->verb == SupervisorCommand::Verb::character && rig_index(command->argument) < 0) {
-                command = make_error(ErrorCode::invalid, "unknown character '" + command->argument + "'");
-            }
-            if (!command) {
-                const std::string message = "error: " + where + command.error().message + "; ignored\n";
-                if (stream) stream->reply(message);
-                else std::cerr << "kumite play: " << message;
-                return;
-            }
-            switch (command->verb) {
-            case SupervisorCommand::Verb::punch:
-            case SupervisorCommand::Verb::kick: {
-                const Side side = command->side == "left" ? Side::left : command->side == "right" ? Side::right : Side::none;
-                if (simulated) simulated->on_order(t);
-                if (scripted) scripted->on_order(t);
-                const char* verb = command->verb == SupervisorCommand::Verb::punch ? "punch" : "kick";
-                for (auto& fighter : fighters) fighter->order(retriever.semantics_id(verb), side);
-                break;
-            }
-            case SupervisorCommand::Verb::character:
-                for (auto& fighter : fighters) fighter->set_character(rig_index(command->argument));
-                break;
-            case SupervisorCommand::Verb::quit: quit = true; break;
-            }
-        };
-        for (; next_command < script.size() && script[next_command].t_s <= t; ++next_command) {
-            apply(script[next_command].command, "line " + std::to_string(script[next_command].line) + ": ");
-        }
-        if (stream) stream->poll([&](std::string_view line) { apply(line, ""); });
-        for (std::size_t f = 0; f < fighters.size(); ++f) {
-            Fighter& fighter = *fighters[f];
-            fighter.step(t, head_now);
-            for (const FighterEvent& event : fighter.events()) {
-                nlohmann::json line = {{"t", event.t_s}, {"type", fighter_event_name(event.type)}, {"fighter", f}};
-                switch (event.type) {
-                case FighterEvent::Type::order:
-                    ++orders;
-                    order_frame[f] = frame;
-                    line["command"] = retriever.semantics_name(event.semantics);
-                    line["side"] = side_text(event.side);
-                    break;
-                case FighterEvent::Type::ignored_order:
-                    ++ignored;
-                    line["why"] = event.why;
-                    break;
-                case FighterEvent::Type::state:
-                    line["state"] = fighter_state_name(event.state);
-                    if (event.state == FighterState::strike && order_frame[f] >= 0) {
-                        command_to_strike.push_back(double(frame - order_frame[f]));
-                        order_frame[f] = -1;
-                    }
-                    break;
-                case FighterEvent::Type::strike:
-                    ++strikes;
-                    (event.hit ? hits : misses) += 1;
-                    line["result"] = event.hit ? "hit" : "miss";
-                    line["contact_error_m"] = event.contact_error_m;
-                    line["head_distance_m"] = event.head_distance_m;
-                    line["range_m"] = event.range_m;
-                    line["clip"] = db.string(db.clips[event.clip].name);
-                    break;
-                case FighterEvent::Type::character: line["character"] = entries[(start_character + event.character) % entries.size()].name; break;
-                case FighterEvent::Type::tracker_lost:
-                case FighterEvent::Type::tracker_back: break;
-                default: break;
-                }
-                write_event(line);
-            }
-            fighter.clear_events();
-        }
-        if (arguments.value("record")) {
-            record_decoder.decode(record_pose, fighters[0]->mir());
-            record.root_translations.push_back(record_pose.root_translation);
-            record.local_rotations.insert(record.local_rotations.end(), record_pose.local_rotations.begin(), record_pose.local_rotations.end());
-        }
-        const double elapsed = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started).count();
-        frame_us.push_back(elapsed);
-        missed += elapsed > 1e6 / rate_hz;
-        if (quit) {
-            ++frame;
-            break;
+    const bool realtime = arguments.has("realtime") || bout.live() || viewer;
+    if (viewer) {
+        view::PlayerRunOptions run;
+        run.duration_s = duration_s;
+        run.stop_after_duration = arguments.has("duration") || arguments.has("screenshot");
+        run.screenshot_path = arguments.value("screenshot").value_or("");
+        const int status = view::run_player_window(bout, viewer_settings, run, after_step);
+        if (status != 0) return status;
+    } else {
+        const long long frames = static_cast<long long>(std::llround(duration_s * bout.rate_hz()));
+        const auto wall_start = std::chrono::steady_clock::now();
+        for (long long frame = 0; frame < frames && !bout.quit_requested(); ++frame) {
+            const double t = double(frame) / bout.rate_hz();
+            if (realtime) std::this_thread::sleep_until(wall_start + std::chrono::duration<double>(t));
+            bout.step(t);
+            after_step();
         }
     }
 
@@ -369,35 +249,25 @@ int run_play(int argc, char** argv) {
         if (error) return input_error(*events_path + ": cannot finish the events file: " + error.message());
     }
     if (const std::optional<std::string> path = arguments.value("record")) {
-        if (Result<void> written = bvh_write_file(*path, record, files[start_character].layout, files[start_character].unit); !written) {
+        const BvhFile& start = bout.starting_character_file();
+        if (Result<void> written = bvh_write_file(*path, bout.recording(), start.layout, start.unit); !written) {
             return input_error(written.error().message);
         }
     }
-    const nlohmann::json times = summary_of(frame_us);
-    double mean_latency = 0.0, max_latency = 0.0;
-    for (double v : command_to_strike) mean_latency += v / command_to_strike.size(), max_latency = std::max(max_latency, v);
-    nlohmann::json report = {{"frames", frame},
-                             {"fighters", fighters.size()},
-                             {"frame_time_us", times},
-                             {"missed_frames", missed},
-                             {"orders", orders},
-                             {"strikes", strikes},
-                             {"hits", hits},
-                             {"misses", misses},
-                             {"ignored_orders", ignored},
-                             {"tracker_packets", receiver ? receiver->stats().packets : 0},
-                             {"tracker_rejected", receiver ? receiver->stats().rejected() : 0},
-                             {"command_to_strike_frames", {{"max", max_latency}, {"mean", mean_latency}}},
-                             {"realtime", realtime}};
+    nlohmann::json report = play_report_json(bout);
+    report["realtime"] = realtime;
+    report["viewer"] = viewer;
     if (const std::optional<std::string> path = arguments.value("report")) {
         if (Result<void> written = write_file_atomically(*path, report.dump(2) + "\n"); !written) return input_error(written.error().message);
     }
     if (arguments.has("json")) {
         print_json(report);
     } else {
-        std::cout << "played " << frame << " frames (" << frame / rate_hz << " s) with " << fighters.size() << " fighter(s): " << orders
-                  << " orders, " << strikes << " strikes, " << hits << " hits, " << misses << " misses, " << ignored
-                  << " ignored; frame time mean " << times["mean"].get<double>() << " us, p99 " << times["p99"].get<double>() << " us\n";
+        const BoutCounters& c = bout.counters();
+        std::cout << "played " << c.frames << " frames (" << double(c.frames) / bout.rate_hz() << " s) with " << bout.fighter_count()
+                  << " fighter(s): " << c.orders << " orders, " << c.strikes << " strikes, " << c.hits << " hits, " << c.misses
+                  << " misses, " << c.ignored_orders << " ignored; frame time mean " << report["frame_time_us"]["mean"].get<double>()
+                  << " us, p99 " << report["frame_time_us"]["p99"].get<double>() << " us\n";
     }
     return k_exit_ok;
 }

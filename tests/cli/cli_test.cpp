@@ -418,7 +418,12 @@ TEST_CASE("cli: play runs a headless bout: report keys, events, a recording, the
     }
     CHECK(strike_lines == report["strikes"].get<std::size_t>());
 
-    CHECK(run_command(kumite_exe() + " play " + db + " --duration 5").status == 2);                           // no --headless yet
+    // Without a display the viewer cannot open: the bout runs headless and says so.
+    const auto no_display = run_command("env -u DISPLAY -u WAYLAND_DISPLAY " + kumite_exe() + " play " + db + " --duration 2 --json");
+    CHECK(no_display.status == 0);
+    CHECK_THAT(no_display.err, Catch::Contains("no display"));
+    CHECK(nlohmann::json::parse(no_display.out)["viewer"] == false);
+    CHECK(run_command(kumite_exe() + " play " + db + " --headless --viewer-config /no/such/file.json").status == 1);
     CHECK(run_command(kumite_exe() + " play " + db + " --headless --tracker simulate:sleepy").status == 2);
     CHECK(run_command(kumite_exe() + " play " + db + " --headless --tracker dtrack:99999").status == 2);
     CHECK(run_command(kumite_exe() + " play " + db + " --headless --commands script:/no/such/file").status == 1);

@@ -1,0 +1,83 @@
+#include "player_scene.h"
+
+#include <Eigen/Geometry>
+
+namespace kumite::view {
+namespace {
+
+const Color k_fighter_colors[] = {{0.86f, 0.55f, 0.25f}, {0.35f, 0.62f, 0.86f}, {0.55f, 0.78f, 0.40f}, {0.80f, 0.45f, 0.70f}};
+
+} // namespace
+
+void strike_path_world(const Fighter& fighter, const MotionDatabaseView& db, std::vector<Eigen::Vector3f>& path) {
+    path.clear();
+    const StrikePlan& plan = fighter.strike_plan();
+    if (plan.clip < 0 || plan.clip >= int(db.clips.size())) return;
+    const DbClip& clip = db.clips[plan.clip];
+    const float actor_leg = db.actors[clip.actor].leg_length_m;
+    const double scale = actor_leg > 0.0f ? fighter.leg_length() / actor_leg : 1.0;
+    for (int frame = plan.start_frame; frame <= plan.contact_frame && frame < int(clip.frame_count); ++frame) {
+        const DbPose& pose = db.poses[clip.first_pose + frame];
+        const Eigen::Vector3d point(pose.hit_point[0], pose.hit_point[1], pose.hit_point[2]);
+        path.push_back(plan.clip_to_world.apply(point * scale).cast<float>());
+    }
+}
+
+void player_scene_build(const Bout& bout, Scene& scene) {
+    scene.clear();
+    scene.floor_half_size_m = 3.0f;
+    for (int f = 0; f < bout.fighter_count(); ++f) {
+        const Fighter& fighter = bout.fighter(f);
+        const Skeleton& skeleton = bout.character_skeleton(fighter.character());
+        const auto positions = fighter.positions();
+        const Color color = k_fighter_colors[f % 4];
+        const float radius = float(0.045 * fighter.leg_length() / 0.9);
+        for (int joint = 1; joint < skeleton.joint_count() && joint < int(positions.size()); ++joint) {
+            const int parent = skeleton.parents[joint];
+            if (parent < 0) continue;
+            Capsule bone;
+            bone.a = positions[parent].cast<float>();
+            bone.b = positions[joint].cast<float>();
+            bone.radius_m = radius;
+            bone.color = color;
+            bone.id = f * 1000 + joint;
+            scene.capsules.push_back(bone);
+        }
+        if (fighter.state() != FighterState::strike) continue;
+        Sphere target;
+        target.center = fighter.latched_target().cast<float>();
+        target.radius_m = 0.12f;
+        target.color = {1.0f, 0.25f, 0.2f};
+        target.opacity = 0.35f;
+        scene.spheres.push_back(target);
+        Polyline path;
+        path.dots = true;
+        path.width_px = 3.0f;
+        path.color = {1.0f, 0.85f, 0.2f};
+        strike_path_world(fighter, bout.database(), path.points);
+        if (!path.points.empty()) {
+            // The path's box in the fighter's heading frame.
+            const HeadingFrame heading = fighter.heading();
+            const Eigen::Matrix3f to_world = Eigen::AngleAxisf(float(heading.yaw_rad), Eigen::Vector3f::UnitY()).toRotationMatrix();
+            WireBox box;
+            box.rotation = to_world;
+            box.origin = heading.origin.cast<float>();
+            box.min = box.max = to_world.transpose() * (path.points[0] - box.origin);
+            for (const Eigen::Vector3f& p : path.points) {
+                const Eigen::Vector3f local = to_world.transpose() * (p - box.origin);
+                box.min = box.min.cwiseMin(local), box.max = box.max.cwiseMax(local);
+            }
+            scene.boxes.push_back(box);
+            scene.polylines.push_back(std::move(path));
+        }
+    }
+    if (const Eigen::Vector3d* head = bout.head()) {
+        Sphere sphere;
+        sphere.center = head->cast<float>();
+        sphere.radius_m = 0.1f;
+        sphere.color = {0.9f, 0.85f, 0.75f};
+        scene.spheres.push_back(sphere);
+    }
+}
+
+} // namespace kumite::view

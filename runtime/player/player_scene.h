@@ -1,0 +1,19 @@
+#pragma once
+// What the player shows of a bout, as a Scene: every fighter as capsules on its current skeleton, the user's head,
+// and for a striking fighter the latched target (a see-through sphere of the hit radius), the retrieved hit
+// trajectory (the database path of the hit segment from the strike's start to its contact, scaled to the
+// character and placed where the retrieval put it), and its bounding box in the fighter's heading frame.
+
+#include "scene.h"
+
+#include "kumite/runtime/bout.h"
+
+namespace kumite::view {
+
+// Rebuilds `scene` from the bout's current frame.
+void player_scene_build(const Bout& bout, Scene& scene);
+
+// The retrieved strike's hit path in world metres, from its start to its contact (empty when not striking).
+void strike_path_world(const Fighter& fighter, const MotionDatabaseView& database, std::vector<Eigen::Vector3f>& path);
+
+} // namespace kumite::view

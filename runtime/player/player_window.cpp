@@ -1,0 +1,233 @@
+#include "player_window.h"
+
+#include "player_scene.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QKeyEvent>
+#include <QPainter>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <cstdio>
+#include <deque>
+
+namespace kumite::view {
+namespace {
+
+struct KeyCommand {
+    int key;
+    const char* label;
+    const char* command;
+};
+const KeyCommand k_keys[] = {{Qt::Key_1, "1", "punch"},      {Qt::Key_2, "2", "punch left"}, {Qt::Key_3, "3", "punch right"},
+                             {Qt::Key_4, "4", "kick"},       {Qt::Key_5, "5", "kick left"},  {Qt::Key_6, "6", "kick right"}};
+
+const char* k_help =
+    "1/2/3 punch any/left/right   4/5/6 kick any/left/right   C next character\n"
+    "V orbit / head-coupled   S mono / side-by-side   F frame   Space pause   Esc quit   mouse: orbit, pan, zoom";
+
+class PlayerWindow : public QWidget {
+public:
+    PlayerWindow(Bout& bout, const ViewerSettings& settings, const PlayerRunOptions& options, const std::function<void()>& after_step)
+        : m_bout(bout), m_options(options), m_after_step(after_step) {
+        setWindowTitle("kumite play");
+        resize(settings.width, settings.height);
+        auto* layout = new QVBoxLayout(this);
+        layout->setContentsMargins(0, 0, 0, 0);
+        m_view = new SceneView(this);
+        layout->addWidget(m_view);
+        m_view->set_head_coupling(settings.coupling);
+        m_view->set_projection(settings.camera);
+        m_view->set_stereo(settings.stereo);
+        m_view->orbit_camera().target = {0.0f, 1.0f, 0.75f};
+        m_view->orbit_camera().distance_m = 5.0f;
+        m_view->set_overlay([this](QPainter& painter, const QRect& rect) { draw_hud(painter, rect); });
+        m_view->setFocusPolicy(Qt::NoFocus);
+        setFocusPolicy(Qt::StrongFocus);
+        connect(&m_timer, &QTimer::timeout, this, [this] { tick(); });
+        m_timer.setTimerType(Qt::PreciseTimer);
+        m_timer.start(4);
+    }
+
+    bool screenshot_failed = false;
+
+protected:
+    void keyPressEvent(QKeyEvent* event) override {
+        for (const KeyCommand& key : k_keys) {
+            if (event->key() == key.key) return send(key.command);
+        }
+        switch (event->key()) {
+        case Qt::Key_C: {
+            const Fighter& fighter = m_bout.fighter(0);
+            send("character " + m_bout.character_name((fighter.character() + 1) % m_bout.character_count()));
+            return;
+        }
+        case Qt::Key_V:
+            m_view->set_projection(m_view->projection() == Projection::orbit ? Projection::head_coupled : Projection::orbit);
+            return;
+        case Qt::Key_S:
+            m_view->set_stereo(m_view->stereo() == StereoMode::mono ? StereoMode::side_by_side : StereoMode::mono);
+            return;
+        case Qt::Key_F: m_view->frame_scene(); return;
+        case Qt::Key_Space: m_paused = !m_paused; return;
+        case Qt::Key_Escape:
+        case Qt::Key_Q: close(); return;
+        default: QWidget::keyPressEvent(event);
+        }
+    }
+
+private:
+    void send(const std::string& line) {
+        if (Result<void> sent = m_bout.command(line); !sent) note("error: " + sent.error().message);
+        else note("> " + line);
+    }
+    void note(const std::string& text) {
+        m_log.push_back(QString::fromStdString(text));
+        while (m_log.size() > 6) m_log.pop_front();
+    }
+
+    void tick() {
+        // Bout time runs on the wall clock, minus the time spent paused; frames due are stepped, a long stall
+        // (a debugger, a dragged window) is skipped rather than replayed.
+        if (!m_clock.isValid()) { // bout time starts with the first tick, once the window is up
+            m_clock.start();
+            m_fps_clock.start();
+        }
+        const double wall_s = m_clock.nsecsElapsed() * 1e-9;
+        if (m_paused) {
+            m_paused_s += wall_s - m_last_wall_s;
+        }
+        m_last_wall_s = wall_s;
+        const double bout_s = wall_s - m_paused_s;
+        const double frame_s = 1.0 / m_bout.rate_hz();
+        if (bout_s - m_next_s > 0.25) m_next_s = bout_s;
+        bool stepped = false;
+        while (!m_paused && m_next_s <= bout_s) {
+            m_bout.step(m_next_s);
+            if (m_after_step) m_after_step();
+            for (const BoutEvent& event : m_bout.events()) describe(event);
+            m_next_s += frame_s;
+            stepped = true;
+            if (m_bout.quit_requested()) break;
+        }
+        if (m_bout.quit_requested() || (m_options.stop_after_duration && bout_s >= m_options.duration_s)) {
+            m_timer.stop();
+            finish();
+            return;
+        }
+        if (!stepped) return;
+        if (m_view->projection() == Projection::head_coupled) {
+            if (const Eigen::Vector3d* head = m_bout.head()) {
+                HeadCoupling coupling = m_view->head_coupling();
+                coupling.eye_world = head->cast<float>();
+                m_view->set_head_coupling(coupling);
+            }
+        }
+        player_scene_build(m_bout, m_view->scene());
+        ++m_frames_drawn;
+        const double fps_elapsed = m_fps_clock.nsecsElapsed() * 1e-9;
+        if (fps_elapsed >= 0.5) {
+            m_fps = m_frames_drawn / fps_elapsed;
+            m_frames_drawn = 0;
+            m_fps_clock.restart();
+        }
+        m_view->update();
+    }
+
+    void finish() {
+        if (!m_options.screenshot_path.empty()) {
+            player_scene_build(m_bout, m_view->scene());
+            const QImage image = m_view->grab_image();
+            if (!image.save(QString::fromStdString(m_options.screenshot_path), "PNG")) {
+                std::fprintf(stderr, "kumite play: cannot write the screenshot %s\n", m_options.screenshot_path.c_str());
+                screenshot_failed = true;
+            }
+        }
+        close();
+    }
+
+    void describe(const BoutEvent& bout_event) {
+        const FighterEvent& e = bout_event.event;
+        char text[160];
+        switch (e.type) {
+        case FighterEvent::Type::strike:
+            std::snprintf(text, sizeof text, "%.1f s  fighter %d: %s, contact error %.1f cm", e.t_s, bout_event.fighter, e.hit ? "HIT" : "miss",
+                          e.contact_error_m * 100.0);
+            break;
+        case FighterEvent::Type::ignored_order: std::snprintf(text, sizeof text, "%.1f s  order ignored: %s", e.t_s, e.why); break;
+        case FighterEvent::Type::tracker_lost: std::snprintf(text, sizeof text, "%.1f s  tracker lost", e.t_s); break;
+        case FighterEvent::Type::tracker_back: std::snprintf(text, sizeof text, "%.1f s  tracker back", e.t_s); break;
+        default: return;
+        }
+        note(text);
+    }
+
+    void draw_hud(QPainter& painter, const QRect& rect) {
+        const BoutCounters& c = m_bout.counters();
+        const Fighter& fighter = m_bout.fighter(0);
+        const double last_us = c.frame_us.empty() ? 0.0 : c.frame_us.back();
+        QString lines = QString("%1  |  %2  |  %3 fps  |  frame %4 us  |  %5 fighter(s)\n")
+                            .arg(fighter_state_name(fighter.state()))
+                            .arg(QString::fromStdString(m_bout.character_name(fighter.character())))
+                            .arg(m_fps, 0, 'f', 0)
+                            .arg(last_us, 0, 'f', 0)
+                            .arg(m_bout.fighter_count());
+        lines += QString("strikes %1: %2 hits, %3 misses  |  last contact error %4  |  %5\n")
+                     .arg(c.strikes)
+                     .arg(c.hits)
+                     .arg(c.misses)
+                     .arg(c.last_contact_error_m < 0 ? QString("-") : QString("%1 cm (%2)").arg(c.last_contact_error_m * 100.0, 0, 'f', 1).arg(c.last_hit ? "hit" : "miss"))
+                     .arg(m_bout.head() ? "head tracked" : "no head");
+        lines += QString("%1 camera%2  |  %3%4")
+                     .arg(m_view->projection() == Projection::orbit ? "orbit" : "head-coupled")
+                     .arg(m_view->stereo() == StereoMode::mono ? "" : ", stereo side by side")
+                     .arg(m_view->renderer_description())
+                     .arg(m_paused ? "  |  PAUSED" : "");
+        painter.save();
+        QFont font = painter.font();
+        font.setPointSizeF(10.0);
+        painter.setFont(font);
+        const QRect top(rect.left() + 10, rect.top() + 8, rect.width() - 20, 70);
+        painter.setPen(QColor(0, 0, 0, 160));
+        painter.drawText(top.translated(1, 1), Qt::AlignLeft | Qt::AlignTop, lines);
+        painter.setPen(QColor(235, 238, 245));
+        painter.drawText(top, Qt::AlignLeft | Qt::AlignTop, lines);
+        QString log;
+        for (const QString& line : m_log) log += line + "\n";
+        const QRect right(rect.right() - 420, rect.top() + 8, 410, 120);
+        painter.setPen(QColor(255, 220, 140));
+        painter.drawText(right, Qt::AlignRight | Qt::AlignTop, log);
+        const QRect bottom(rect.left() + 10, rect.bottom() - 44, rect.width() - 20, 40);
+        painter.setPen(QColor(180, 190, 210));
+        painter.drawText(bottom, Qt::AlignLeft | Qt::AlignBottom, k_help);
+        painter.restore();
+    }
+
+    Bout& m_bout;
+    PlayerRunOptions m_options;
+    std::function<void()> m_after_step;
+    SceneView* m_view = nullptr;
+    QTimer m_timer;
+    QElapsedTimer m_clock, m_fps_clock;
+    double m_next_s = 0.0, m_paused_s = 0.0, m_last_wall_s = 0.0, m_fps = 0.0;
+    int m_frames_drawn = 0;
+    bool m_paused = false;
+    std::deque<QString> m_log;
+};
+
+} // namespace
+
+int run_player_window(Bout& bout, const ViewerSettings& settings, const PlayerRunOptions& options, const std::function<void()>& after_step) {
+    static int argc = 1;
+    static char name[] = "kumite";
+    static char* argv[] = {name, nullptr};
+    QApplication application(argc, argv);
+    PlayerWindow window(bout, settings, options, after_step);
+    if (settings.fullscreen) window.showFullScreen();
+    else window.show();
+    application.exec();
+    return window.screenshot_failed ? 1 : 0;
+}
+
+} // namespace kumite::view

@@ -1,0 +1,23 @@
+#pragma once
+// Geometry of a scene shared by the renderers and picking (no Qt).
+
+#include "scene.h"
+#include "view_camera.h"
+
+#include <array>
+#include <utility>
+
+namespace kumite::view {
+
+// The capsule nearest to the eye among those the ray through a viewport point passes within their radius times
+// `slack` (bones are thin). `ndc`: the point in normalized device coordinates (-1..1, y up). Returns the capsule's id, or -1.
+int pick_capsule(const Scene& scene, const ViewProjection& view_projection, Eigen::Vector2f ndc, float slack = 1.5f);
+
+// World point -> normalized device coordinates and the eye-space depth (positive in front of the eye).
+// Returns false behind the eye.
+bool project_point(const ViewProjection& view_projection, const Eigen::Vector3f& world, Eigen::Vector2f& ndc, float& depth);
+
+// The 12 edges of a wire box, in world.
+std::array<std::pair<Eigen::Vector3f, Eigen::Vector3f>, 12> wire_box_edges(const WireBox& box);
+
+} // namespace kumite::view

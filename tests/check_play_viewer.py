@@ -1,0 +1,81 @@
+#!/usr/bin/env python3
+"""The player's viewer under Xvfb: `kumite play` without --headless opens the window, steps the bout in real time
+for a few seconds with two orders, saves a screenshot and exits. The report must say the viewer ran and the
+strikes happened; the screenshot must show the fighter (enough pixels of the fighter's colour) and the HUD.
+
+usage: check_play_viewer.py KUMITE DB.kdb OUTPUT_DIR      (exit 77: skipped when xvfb-run is not installed)
+"""
+import json, os, shutil, struct, subprocess, sys, zlib
+
+
+def read_png(path):
+    """Decodes an 8-bit RGB or RGBA, non-interlaced PNG (what Qt writes) into rows of (r, g, b) tuples."""
+    data = open(path, "rb").read()
+    assert data[:8] == b"\x89PNG\r\n\x1a\n", "not a PNG"
+    pos, idat, width = 8, b"", 0
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        body = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            width, height, depth, colour, _, _, interlace = struct.unpack(">IIBBBBB", body)
+            assert depth == 8 and colour in (2, 6) and interlace == 0, f"unexpected PNG format {depth} {colour} {interlace}"
+            channels = 3 if colour == 2 else 4
+        elif kind == b"IDAT":
+            idat += body
+        pos += 12 + length
+    raw = zlib.decompress(idat)
+    stride = width * channels
+    rows, previous = [], bytearray(stride)
+    for y in range(height):
+        filter_type = raw[y * (stride + 1)]
+        line = bytearray(raw[y * (stride + 1) + 1:(y + 1) * (stride + 1)])
+        for i in range(stride):
+            a = line[i - channels] if i >= channels else 0
+            b = previous[i]
+            c = previous[i - channels] if i >= channels else 0
+            if filter_type == 1: line[i] = (line[i] + a) & 255
+            elif filter_type == 2: line[i] = (line[i] + b) & 255
+            elif filter_type == 3: line[i] = (line[i] + (a + b) // 2) & 255
+            elif filter_type == 4:
+                p = a + b - c
+                pa, pb, pc = abs(p - a), abs(p - b), abs(p - c)
+                line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append([tuple(line[x * channels:x * channels + 3]) for x in range(width)])
+        previous = line
+    return rows
+
+
+def main():
+    kumite, database, out = sys.argv[1:4]
+    if shutil.which("xvfb-run") is None:
+        print("skipped: xvfb-run is not installed (scripts/setup.sh --test installs it)")
+        return 77
+    os.makedirs(out, exist_ok=True)
+    script, shot, report = os.path.join(out, "orders.txt"), os.path.join(out, "viewer.png"), os.path.join(out, "viewer_report.json")
+    open(script, "w").write("0.5 punch\n2.0 kick right\n")
+    for path in (shot, report):
+        if os.path.exists(path): os.remove(path)
+    command = ["xvfb-run", "-a", "-s", "-screen 0 1280x720x24", kumite, "play", database, "--commands", "script:" + script,
+               "--duration", "3.5", "--screenshot", shot, "--report", report]
+    result = subprocess.run(command, capture_output=True, text=True, timeout=120)
+    print(result.stdout, result.stderr)
+    assert result.returncode == 0, f"kumite play exited {result.returncode}"
+    summary = json.load(open(report))
+    print(json.dumps(summary))
+    assert summary["viewer"] is True, "the viewer did not open"
+    assert summary["orders"] == 2 and summary["strikes"] >= 1, "the orders did not produce strikes"
+    assert summary["frames"] >= 3.5 * 60 * 0.9, "the bout did not step at 60 Hz in the window"
+    rows = read_png(shot)
+    height, width = len(rows), len(rows[0])
+    # The first fighter is drawn orange (0.86, 0.55, 0.25), shaded: red clearly above green above blue.
+    fighter = sum(1 for row in rows for (r, g, b) in row if r > 120 and r > g + 30 and g > b + 25)
+    # The HUD: near-white text in the top-left corner.
+    hud = sum(1 for row in rows[:60] for (r, g, b) in row[:500] if r > 200 and g > 200 and b > 200)
+    print(f"screenshot {width}x{height}: {fighter} fighter pixels, {hud} HUD pixels")
+    assert fighter > 2000, "the fighter is not visible in the screenshot"
+    assert hud > 200, "the HUD is not visible in the screenshot"
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
