@@ -14,6 +14,7 @@
 #include <catch2/catch.hpp>
 
 #include <QApplication>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFileDialog>
@@ -290,4 +291,30 @@ TEST_CASE("annotate window: a killed window's edits are offered back and recover
     REQUIRE(window.save());
     CHECK(read_text(file) == autosaved);
     CHECK_FALSE(std::filesystem::exists(file.string() + ".autosave"));
+}
+
+TEST_CASE("annotate window: a folder opens every capture, the first on show, the selector switches", "[annotate_window]") {
+    gui_application();
+    if (!have_captures()) { WARN("captures absent: skipped"); return; }
+    const std::filesystem::path root = temp_mocap_root("annotate-window-folder");
+    const std::string punch = "bandai-namco-1/dataset-1_punch_normal_001.bvh";
+    std::filesystem::copy_file(test::mocap_root() / punch, root / punch);
+    std::ofstream(root / "bandai-namco-1/zz_broken.bvh") << "HIERARCHY\nROOT Hips\n";
+    MainWindow window(root, /*interactive=*/false);
+    window.show();
+    REQUIRE(window.open_path(QString::fromStdString((root / "bandai-namco-1").string())));
+    settle();
+    AnnotationDocument& document = window.document();
+    CHECK(document.captures().captures().size() == 2);
+    REQUIRE(document.issues().size() == 1); // the broken one, with its name
+    CHECK(document.issues()[0].file.endsWith("zz_broken.bvh"));
+    REQUIRE(document.current_capture());
+    CHECK(document.current_capture()->source == k_kick_capture);
+    auto* selector = window.findChild<QComboBox*>("capture_selector");
+    REQUIRE(selector);
+    REQUIRE(selector->count() == 2);
+    CHECK(selector->currentIndex() == 0);
+    selector->setCurrentIndex(1);
+    emit selector->activated(1);
+    CHECK(document.current_capture()->source == punch);
 }

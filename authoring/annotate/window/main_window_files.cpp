@@ -68,10 +68,16 @@ bool MainWindow::open_folder(const QString& path) {
         return false;
     }
     int opened = 0;
+    std::string first_source;
     for (const QString& capture : captures) {
-        if (Result<void> result = m_document->open_capture(capture); result) ++opened;
-        else m_document->report_error(result.error().message, capture);
+        if (Result<void> result = m_document->open_capture(capture); result) {
+            if (++opened == 1) first_source = m_document->current_capture()->source;
+        } else {
+            m_document->report_error(result.error().message, capture);
+        }
     }
+    if (opened > 0) m_document->set_current_source(first_source); // the folder's first, not its last
+
     remember_recent(path);
     statusBar()->showMessage(tr("Opened %1 of %2 captures from %3").arg(opened).arg(captures.size()).arg(path), 5000);
     return opened > 0;

@@ -1,5 +1,6 @@
 #include "timeline_panel.h"
 
+#include <QComboBox>
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
@@ -25,6 +26,12 @@ bool suggestion_accepted(const AnnotationDocument& document, const StrikeSuggest
 TimelinePanel::TimelinePanel(AnnotationDocument& document, QWidget* parent) : QWidget(parent), m_document(document) {
     auto* layout = new QVBoxLayout(this);
     auto* controls = new QHBoxLayout;
+    m_capture = new QComboBox(this);
+    m_capture->setObjectName(QStringLiteral("capture_selector"));
+    m_capture->setToolTip(tr("The capture on show: every capture opened in this session"));
+    m_capture->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+    m_capture->setMaximumWidth(360);
+    controls->addWidget(m_capture);
     auto add_button = [&](QStyle::StandardPixmap icon, const QString& tip) {
         auto* button = new QPushButton(style()->standardIcon(icon), QString(), this);
         button->setToolTip(tip);
@@ -69,11 +76,27 @@ TimelinePanel::TimelinePanel(AnnotationDocument& document, QWidget* parent) : QW
         if (capture && *m_preview < int(capture->suggestions.size())) set_current_frame(capture->suggestions[size_t(*m_preview)].hit_frame);
         emit preview_changed();
     });
+    connect(m_capture, &QComboBox::activated, this,
+            [this](int index) { m_document.set_current_source(m_capture->itemData(index).toString().toStdString()); });
+    connect(&document, &AnnotationDocument::captures_changed, this, &TimelinePanel::rebuild_captures);
     connect(&document, &AnnotationDocument::current_capture_changed, this, &TimelinePanel::on_capture_changed);
     connect(&document, &AnnotationDocument::selection_changed, this, &TimelinePanel::on_selection_changed);
     connect(&document, &AnnotationDocument::clip_changed, this, &TimelinePanel::on_selection_changed);
     connect(&document, &AnnotationDocument::clips_reset, this, &TimelinePanel::rebuild_suggestions);
+    rebuild_captures();
     on_capture_changed();
+}
+
+void TimelinePanel::rebuild_captures() {
+    const QSignalBlocker block(m_capture);
+    m_capture->clear();
+    for (const auto& capture : m_document.captures().captures()) {
+        const QString source = QString::fromStdString(capture->source);
+        m_capture->addItem(QString::fromStdString(capture->path.filename().string()), source);
+        m_capture->setItemData(m_capture->count() - 1, source, Qt::ToolTipRole);
+    }
+    const LoadedCapture* current = m_document.current_capture();
+    m_capture->setCurrentIndex(current ? m_capture->findData(QString::fromStdString(current->source)) : -1);
 }
 
 void TimelinePanel::set_current_frame(int frame) {
@@ -116,6 +139,10 @@ void TimelinePanel::advance_playback() {
 
 void TimelinePanel::on_capture_changed() {
     const LoadedCapture* capture = m_document.current_capture();
+    {
+        const QSignalBlocker block(m_capture);
+        m_capture->setCurrentIndex(capture ? m_capture->findData(QString::fromStdString(capture->source)) : -1);
+    }
     const int frame_count = capture ? capture->file.clip.frame_count() : 0;
     m_slider->setRange(0, std::max(0, frame_count - 1));
     m_strip->set_frame_count(frame_count);
@@ -124,6 +151,7 @@ void TimelinePanel::on_capture_changed() {
     if (m_document.selected_clip() < 0 && capture && !capture->suggestions.empty()) {
         m_suggestions->setCurrentItem(m_suggestions->topLevelItem(0)); // previews it and moves to its hit
     } else {
+        if (m_document.selected_clip() < 0) set_current_frame(0); // frames of another capture mean nothing here
         on_selection_changed();
     }
     emit preview_changed();

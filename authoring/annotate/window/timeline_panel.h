@@ -1,5 +1,5 @@
 #pragma once
-// The timeline dock: play/pause, step, scrub slider, frame and time readout, the strip with the trim handles and
+// The timeline dock: the capture on show (any the session opened), play/pause, step, scrub slider, frame and time readout, the strip with the trim handles and
 // the hit marker (timeline_strip.h), and the strikes `kumite suggest` proposes for the current capture. Selecting
 // a proposal previews it in the viewport; its Accept button adds it to the file as a clip, one undo step.
 
@@ -9,6 +9,7 @@
 #include <QTimer>
 #include <QWidget>
 
+class QComboBox;
 class QLabel;
 class QPushButton;
 class QSlider;
@@ -37,6 +38,7 @@ private:
     void on_selection_changed();
     void on_handle_dragged(TimelineHandle handle, int frame, int drag_session);
     void rebuild_suggestions();
+    void rebuild_captures();
     void update_readout();
     void advance_playback();
     std::pair<int, int> play_range() const;
@@ -45,6 +47,7 @@ private:
     int m_frame = 0;
     std::optional<int> m_preview;
     QTimer m_play_timer;
+    QComboBox* m_capture = nullptr;
     QPushButton* m_play = nullptr;
     QSlider* m_slider = nullptr;
     QLabel* m_readout = nullptr;
