@@ -65,6 +65,26 @@ TEST_CASE("autosave: an edit writes <file>.autosave after the delay, a save remo
     CHECK(autosave_pending_for(path, false).isEmpty());
 }
 
+TEST_CASE("autosave: a long drag is autosaved while it goes on, not only when it stops", "[annotate]") {
+    test::qt_application();
+    const std::filesystem::path folder = test::make_temp_dir("annotate-autosave-drag");
+    const QString path = QString::fromStdString((folder / "shots.json").string());
+    AnnotationDocument document(test::mocap_root());
+    Autosaver autosaver(document, 100);
+    document.add_clip(kick_clip("first", k_kick_capture));
+    REQUIRE(document.save_as(path));
+    const QString sidecar = autosave_sidecar_for_file(path);
+    bool written_during_drag = false;
+    for (int step = 0; step < 40 && !written_during_drag; ++step) { // an edit every ~15 ms for up to 600 ms
+        RawAnnotatedClip clip = document.clip(0);
+        clip.first_frame = 168 - 1 - step % 20;
+        document.edit_clip(0, clip, ClipField::first_frame, 99);
+        test::process_events_until([] { return false; }, 15);
+        written_during_drag = QFile::exists(sidecar);
+    }
+    CHECK(written_during_drag);
+}
+
 TEST_CASE("autosave: undoing back to the saved state removes the sidecar", "[annotate]") {
     test::qt_application();
     const std::filesystem::path folder = test::make_temp_dir("annotate-autosave-undo");

@@ -45,7 +45,8 @@ QString Autosaver::sidecar_path() const {
 
 void Autosaver::on_document_changed() {
     if (m_document.is_dirty()) {
-        m_timer.start();
+        // Not restarted by later edits: a long drag still autosaves every `delay_ms`, so a kill loses at most that.
+        if (!m_timer.isActive()) m_timer.start();
     } else {
         m_timer.stop();
         remove_sidecars(); // undone back to what the file holds: nothing to recover

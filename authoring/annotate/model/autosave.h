@@ -1,5 +1,5 @@
 #pragma once
-// Autosave: while a document has unsaved changes, its text is written to a sidecar shortly after each edit, so a
+// Autosave: while a document has unsaved changes, its text is written to a sidecar within half a second of an edit, so a
 // killed process loses nothing. The sidecar is `<file>.autosave` beside the annotation file, or, for a document
 // never saved, `<capture>.annotations.json.autosave` beside its first capture. It is removed when the document
 // is saved or undone back to its clean state, and offered for recovery when the file or capture is opened again.
@@ -23,8 +23,8 @@ QString autosave_pending_for(const QString& opened_path, bool is_capture);
 class Autosaver : public QObject {
     Q_OBJECT
 public:
-    // Writes `delay_ms` after the last edit (0: at the next event loop turn).
-    Autosaver(AnnotationDocument& document, int delay_ms = 1000, QObject* parent = nullptr);
+    // Writes at most `delay_ms` after the first edit not yet autosaved (0: at the next event loop turn).
+    Autosaver(AnnotationDocument& document, int delay_ms = 500, QObject* parent = nullptr);
 
     // Where the document's autosave goes now; empty when it has neither a file nor a capture.
     QString sidecar_path() const;
