@@ -135,3 +135,19 @@ TEST_CASE("strike workflow: the saved file bakes with `kumite bake`, the window'
     CHECK(poses.size > 0);
     CHECK(poses.size <= 50);
 }
+
+TEST_CASE("strike workflow: a hand-trimmed kick gets its hit frame proposed at the foot's peak", "[annotate]") {
+    test::qt_application();
+    if (!std::filesystem::exists(test::mocap_root() / k_kick_capture)) { WARN("captures absent: skipped"); return; }
+    AnnotationDocument document(test::mocap_root());
+    REQUIRE(document.open_capture(QString::fromStdString((test::mocap_root() / k_kick_capture).string())));
+    const LoadedCapture& capture = *document.current_capture();
+    // The reference file's second kick was confirmed at 194 (data/annotations/reference.json).
+    const std::optional<int> kick = hit_frame_suggest(capture, BodyPart::foot_r, 150, 230);
+    REQUIRE(kick);
+    CHECK(*kick == 194);
+    // No kick of the left foot there: its own extension peak, inside the range, or none.
+    const std::optional<int> left = hit_frame_suggest(capture, BodyPart::foot_l, 150, 230);
+    if (left) CHECK((*left >= 150 && *left <= 230));
+    CHECK_FALSE(hit_frame_suggest(capture, BodyPart::foot_r, 100, 120)); // the foot stays down there
+}

@@ -45,6 +45,20 @@ RawAnnotatedClip clip_from_suggestion(const StrikeSuggestion& strike, const std:
     return clip;
 }
 
+std::optional<int> hit_frame_suggest(const LoadedCapture& capture, BodyPart segment, int first_frame, int last_frame) {
+    if (!capture.anatomy) return std::nullopt;
+    auto best_in_range = [&](const std::vector<StrikeSuggestion>& strikes) -> std::optional<int> {
+        const StrikeSuggestion* best = nullptr;
+        for (const StrikeSuggestion& strike : strikes) {
+            if (strike.segment != segment || strike.hit_frame < first_frame || strike.hit_frame > last_frame) continue;
+            if (!best || strike.confidence > best->confidence) best = &strike;
+        }
+        return best ? std::optional<int>(best->hit_frame) : std::nullopt;
+    };
+    if (const std::optional<int> strike = best_in_range(capture.suggestions)) return strike;
+    return best_in_range(strikes_detect(capture.file.clip, *capture.anatomy, segment));
+}
+
 std::filesystem::path CaptureLibrary::resolve(const std::string& source) const {
     const std::filesystem::path path(source);
     std::error_code error;

@@ -36,6 +36,11 @@ std::string source_relative_to_root(const std::filesystem::path& path, const std
 // A suggestion as a clip of `source`, named and mirrored the way `kumite suggest --write-annotations` does.
 RawAnnotatedClip clip_from_suggestion(const StrikeSuggestion& strike, const std::string& source);
 
+// The hit frame to propose for a clip of `capture` trimmed to first..last with this hit segment: the hit of a
+// punch/kick suggestion of that segment inside the range, else the strongest extension peak of the segment
+// (strikes_detect's "reach") inside it; none without anatomy or peak. The animator confirms it.
+std::optional<int> hit_frame_suggest(const LoadedCapture& capture, BodyPart segment, int first_frame, int last_frame);
+
 class CaptureLibrary {
 public:
     explicit CaptureLibrary(std::filesystem::path mocap_root) : m_mocap_root(std::move(mocap_root)) {}

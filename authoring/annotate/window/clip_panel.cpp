@@ -68,7 +68,12 @@ ClipPanel::ClipPanel(AnnotationDocument& document, QWidget* parent) : QWidget(pa
     form->addRow(tr("Hit segment"), m_segment);
     form->addRow(tr("In frame"), m_first);
     form->addRow(tr("Out frame"), m_last);
-    form->addRow(tr("Hit frame"), m_hit);
+    auto* hit_row = new QHBoxLayout;
+    hit_row->addWidget(m_hit, 1);
+    auto* suggest_hit = new QPushButton(tr("Suggest"), m_fields);
+    suggest_hit->setToolTip(tr("Put the hit frame at the hit segment's extension peak inside the trim range"));
+    hit_row->addWidget(suggest_hit);
+    form->addRow(tr("Hit frame"), hit_row);
     form->addRow(QString(), m_mirror);
     form->addRow(m_messages);
     layout->addWidget(m_fields);
@@ -111,6 +116,7 @@ ClipPanel::ClipPanel(AnnotationDocument& document, QWidget* parent) : QWidget(pa
     connect_spin(m_hit, ClipField::hit_frame, [](RawAnnotatedClip& clip, int value) {
         clip.hit_frame = value < 0 ? std::nullopt : std::optional<int>(value);
     });
+    connect(suggest_hit, &QPushButton::clicked, this, [this] { suggest_hit_frame(); });
     connect(m_mirror, &QCheckBox::toggled, this, [this](bool on) { edit(ClipField::mirror, [&](RawAnnotatedClip& clip) { clip.mirror = on; }); });
 
     connect(&document, &AnnotationDocument::clips_reset, this, &ClipPanel::rebuild_list);
@@ -141,6 +147,23 @@ void ClipPanel::add_clip_at(int frame) {
     clip.last_frame = std::min(last_frame, around + half_span);
     clip.semantics = "rest"; // valid as it is; the animator turns it into a strike by picking semantics
     m_document.add_clip(std::move(clip));
+}
+
+void ClipPanel::suggest_hit_frame() {
+    const int selected = m_document.selected_clip();
+    if (selected < 0) return;
+    const RawAnnotatedClip& clip = m_document.clip(selected);
+    const LoadedCapture* capture = m_document.capture_of(selected);
+    if (!clip.segment || !capture) {
+        m_messages->setText(tr("Choose the hit segment first (click a bone in the viewport)."));
+        return;
+    }
+    const std::optional<int> hit = hit_frame_suggest(*capture, *clip.segment, clip.first_frame, clip.last_frame);
+    if (!hit) {
+        m_messages->setText(tr("No extension peak of %1 inside %2-%3.").arg(part_text(*clip.segment)).arg(clip.first_frame).arg(clip.last_frame));
+        return;
+    }
+    edit(ClipField::hit_frame, [&](RawAnnotatedClip& changed) { changed.hit_frame = *hit; });
 }
 
 void ClipPanel::edit(ClipField field, const std::function<void(RawAnnotatedClip&)>& change, int session) {

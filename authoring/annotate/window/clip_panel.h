@@ -24,6 +24,8 @@ public:
 
     // Adds a clip of the current capture around `frame` (the timeline's), selected afterwards.
     void add_clip_at(int frame);
+    // Moves the selected clip's hit frame to the one hit_frame_suggest proposes (one undo step).
+    void suggest_hit_frame();
 
 private:
     void rebuild_list();
