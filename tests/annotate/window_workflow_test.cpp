@@ -19,6 +19,7 @@
 #include <QElapsedTimer>
 #include <QFileDialog>
 #include <QMessageBox>
+#include <QMimeData>
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QThread>
@@ -317,4 +318,27 @@ TEST_CASE("annotate window: a folder opens every capture, the first on show, the
     selector->setCurrentIndex(1);
     emit selector->activated(1);
     CHECK(document.current_capture()->source == punch);
+}
+
+TEST_CASE("annotate window: files dropped on the window open; a bad one becomes an issue", "[annotate_window]") {
+    gui_application();
+    if (!have_captures()) { WARN("captures absent: skipped"); return; }
+    const std::filesystem::path root = temp_mocap_root("annotate-window-drop");
+    const std::filesystem::path bad = root / "bad.json";
+    std::ofstream(bad) << "[1, 2";
+    MainWindow window(root, /*interactive=*/false);
+    window.show();
+    QMimeData mime;
+    mime.setUrls({QUrl::fromLocalFile(QString::fromStdString((root / k_kick_capture).string())),
+                  QUrl::fromLocalFile(QString::fromStdString(bad.string()))});
+    QDragEnterEvent enter(QPoint(50, 50), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(&window, &enter);
+    CHECK(enter.isAccepted());
+    QDropEvent drop(QPointF(50, 50), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+    QApplication::sendEvent(&window, &drop);
+    AnnotationDocument& document = window.document();
+    REQUIRE(document.current_capture());
+    CHECK(document.current_capture()->source == k_kick_capture);
+    REQUIRE(document.issues().size() == 1);
+    CHECK(document.issues()[0].file.endsWith("bad.json"));
 }

@@ -13,6 +13,7 @@
 #include <QKeySequence>
 #include <QMenuBar>
 #include <QStatusBar>
+#include <QUndoView>
 
 #include <cmath>
 
@@ -72,7 +73,11 @@ void MainWindow::build_docks() {
     QDockWidget* clips_dock = add_dock(tr("Clips"), m_clips, Qt::RightDockWidgetArea);
     m_issues_dock = add_dock(tr("Issues"), m_issues, Qt::BottomDockWidgetArea);
     m_heatmap_dock = add_dock(tr("Heatmap"), m_heatmap, Qt::RightDockWidgetArea);
+    auto* history = new QUndoView(m_document->undo_stack(), this);
+    history->setEmptyLabel(tr("<opened>"));
+    QDockWidget* history_dock = add_dock(tr("History"), history, Qt::BottomDockWidgetArea);
     tabifyDockWidget(timeline_dock, m_issues_dock);
+    tabifyDockWidget(m_issues_dock, history_dock);
     tabifyDockWidget(clips_dock, m_heatmap_dock);
     timeline_dock->raise();
     clips_dock->raise();
