@@ -342,3 +342,31 @@ TEST_CASE("annotate window: files dropped on the window open; a bad one becomes 
     REQUIRE(document.issues().size() == 1);
     CHECK(document.issues()[0].file.endsWith("bad.json"));
 }
+
+TEST_CASE("annotate window: a bake that fails (missing capture) reports it and writes nothing", "[annotate_window]") {
+    gui_application();
+    const std::filesystem::path root = test::make_temp_dir("annotate-window-bake-fail");
+    RawAnnotations annotations;
+    RawAnnotatedClip clip;
+    clip.name = "ghost";
+    clip.source = "nowhere/missing.bvh";
+    clip.first_frame = 0, clip.last_frame = 10, clip.semantics = "rest";
+    annotations.clips.push_back(clip);
+    REQUIRE(annotations_write_file(root / "ghost.json", annotations));
+    MainWindow window(root);
+    window.show();
+    REQUIRE(window.open_path(QString::fromStdString((root / "ghost.json").string())));
+    const size_t issues_before = window.document().issues().size();
+    CHECK(issues_before == 1); // the missing capture, when the file opened
+    const std::filesystem::path database = root / "ghost.kdb";
+    choose_file(QString::fromStdString(database.string()));
+    QString warning;
+    answer_next_dialog<QMessageBox>([&warning](QMessageBox* box) {
+        warning = box->text();
+        box->button(QMessageBox::Ok)->click();
+    });
+    window.bake();
+    CHECK(warning.contains("missing.bvh"));
+    CHECK(window.document().issues().size() == issues_before + 1);
+    CHECK_FALSE(std::filesystem::exists(database));
+}
