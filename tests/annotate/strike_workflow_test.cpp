@@ -119,21 +119,45 @@ TEST_CASE("strike workflow: the saved file bakes with `kumite bake`, the window'
     CHECK(view.clips.size() == 6); // three kicks and their mirrors
 
     const PoseHeatmap clusters = pose_heatmap_of_clusters(view);
-    REQUIRE(clusters.size == int(view.clusters.size()));
+    REQUIRE(clusters.rows == int(view.clusters.size()));
+    REQUIRE(clusters.columns == clusters.rows);
     CHECK(clusters.max_distance > 0.0f);
-    for (int row = 0; row < clusters.size; ++row) {
+    for (int row = 0; row < clusters.rows; ++row) {
         CHECK(clusters.at(row, row) == 0.0f);
         for (int column = 0; column < row; ++column) CHECK(clusters.at(row, column) == clusters.at(column, row));
         // A row's pose is a member of its cluster, and it leads back to a clip of the file.
         const DbCluster& cluster = view.clusters[size_t(row)];
         const auto members = view.members.subspan(cluster.first_member, cluster.member_count);
-        CHECK(std::find(members.begin(), members.end(), clusters.poses[size_t(row)]) != members.end());
-        const PoseLocation location = pose_location(view, clusters.poses[size_t(row)]);
+        CHECK(std::find(members.begin(), members.end(), clusters.row_poses[size_t(row)]) != members.end());
+        CHECK(clusters.column_poses[size_t(row)] == clusters.row_poses[size_t(row)]);
+        const PoseLocation location = pose_location(view, clusters.row_poses[size_t(row)]);
         CHECK(document.find_clip(location.clip_name) >= 0);
     }
     const PoseHeatmap poses = pose_heatmap_of_poses(view, 50);
-    CHECK(poses.size > 0);
-    CHECK(poses.size <= 50);
+    CHECK(poses.rows > 0);
+    CHECK(poses.rows <= 50);
+    CHECK(poses.columns == poses.rows);
+
+    // One clip's poses against the clusters: a row per baked frame, and each pose's own cluster is among the
+    // nearest centroids (k-means assigns it to the nearest one when it converged).
+    const std::string name = document.clip(1).name;
+    const PoseHeatmap clip = pose_heatmap_of_clip(view, name);
+    const auto baked_clip = std::find_if(view.clips.begin(), view.clips.end(), [&](const DbClip& c) { return view.string(c.name) == name; });
+    REQUIRE(baked_clip != view.clips.end());
+    REQUIRE(clip.rows == int(baked_clip->frame_count));
+    REQUIRE(clip.columns == int(view.clusters.size()));
+    int nearest_is_own = 0;
+    for (int row = 0; row < clip.rows; ++row) {
+        CHECK(clip.row_poses[size_t(row)] == baked_clip->first_pose + std::uint32_t(row));
+        CHECK(pose_location(view, clip.row_poses[size_t(row)]).clip_name == name);
+        int nearest = 0;
+        for (int column = 1; column < clip.columns; ++column) nearest = clip.at(row, column) < clip.at(row, nearest) ? column : nearest;
+        const DbCluster& own = view.clusters[size_t(nearest)];
+        const auto members = view.members.subspan(own.first_member, own.member_count);
+        nearest_is_own += std::find(members.begin(), members.end(), clip.row_poses[size_t(row)]) != members.end();
+    }
+    CHECK(nearest_is_own >= clip.rows * 9 / 10);
+    CHECK(pose_heatmap_of_clip(view, "no such clip").rows == 0);
 }
 
 TEST_CASE("strike workflow: a hand-trimmed kick gets its hit frame proposed at the foot's peak", "[annotate]") {

@@ -40,17 +40,18 @@ HeatmapView::HeatmapView(QWidget* parent) : QWidget(parent) {
     setMinimumSize(160, 160);
 }
 
-void HeatmapView::set_heatmap(const PoseHeatmap* heatmap) {
+void HeatmapView::set_heatmap(const PoseHeatmap* heatmap, const QString& empty_text) {
     m_heatmap = heatmap;
+    m_empty_text = empty_text;
     m_marked.reset();
     m_image = QImage();
-    if (heatmap && heatmap->size > 0) {
-        m_image = QImage(heatmap->size, heatmap->size, QImage::Format_RGB32);
+    if (heatmap && heatmap->rows > 0 && heatmap->columns > 0) {
+        m_image = QImage(heatmap->columns, heatmap->rows, QImage::Format_RGB32);
         const float scale = heatmap->max_distance > 0.0f ? 1.0f / std::sqrt(heatmap->max_distance) : 0.0f;
-        for (int row = 0; row < heatmap->size; ++row) {
+        for (int row = 0; row < heatmap->rows; ++row) {
             auto* line = reinterpret_cast<QRgb*>(m_image.scanLine(row));
             // sqrt: Kovar's distance is squared; the root spreads the near poses the animator looks for.
-            for (int column = 0; column < heatmap->size; ++column) line[column] = ramp(std::sqrt(heatmap->at(row, column)) * scale);
+            for (int column = 0; column < heatmap->columns; ++column) line[column] = ramp(std::sqrt(heatmap->at(row, column)) * scale);
         }
     }
     update();
@@ -62,11 +63,11 @@ QRectF HeatmapView::matrix_rect() const {
 }
 
 std::optional<std::pair<int, int>> HeatmapView::cell_at(QPointF point) const {
-    if (!m_heatmap || m_heatmap->size == 0) return std::nullopt;
+    if (m_image.isNull()) return std::nullopt;
     const QRectF area = matrix_rect();
     if (!area.contains(point)) return std::nullopt;
-    const int column = std::clamp(int((point.x() - area.left()) / area.width() * m_heatmap->size), 0, m_heatmap->size - 1);
-    const int row = std::clamp(int((point.y() - area.top()) / area.height() * m_heatmap->size), 0, m_heatmap->size - 1);
+    const int column = std::clamp(int((point.x() - area.left()) / area.width() * m_heatmap->columns), 0, m_heatmap->columns - 1);
+    const int row = std::clamp(int((point.y() - area.top()) / area.height() * m_heatmap->rows), 0, m_heatmap->rows - 1);
     return std::pair{row, column};
 }
 
@@ -74,15 +75,17 @@ void HeatmapView::paintEvent(QPaintEvent*) {
     QPainter painter(this);
     painter.fillRect(rect(), palette().window());
     if (m_image.isNull()) {
-        painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, tr("Bake the file (File > Bake...) to see its pose distances"));
+        painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap, m_empty_text);
         return;
     }
     const QRectF area = matrix_rect();
     painter.drawImage(area, m_image);
     if (m_marked) {
-        const double cell = area.width() / m_heatmap->size;
+        const double cell_width = area.width() / m_heatmap->columns, cell_height = area.height() / m_heatmap->rows;
         painter.setPen(QPen(Qt::white, 2));
-        painter.drawRect(QRectF(area.left() + m_marked->second * cell, area.top() + m_marked->first * cell, cell, cell).adjusted(-1, -1, 1, 1));
+        painter.drawRect(QRectF(area.left() + m_marked->second * cell_width, area.top() + m_marked->first * cell_height, cell_width,
+                                cell_height)
+                             .adjusted(-1, -1, 1, 1));
     }
 }
 
@@ -98,8 +101,8 @@ void HeatmapView::mouseMoveEvent(QMouseEvent* event) {
     const auto cell = cell_at(event->position());
     if (!cell) return;
     QToolTip::showText(event->globalPosition().toPoint(),
-                       tr("%1\n%2\nd = %3").arg(QString::fromStdString(m_heatmap->labels[size_t(cell->first)]),
-                                                QString::fromStdString(m_heatmap->labels[size_t(cell->second)]))
+                       tr("%1\n%2\nd = %3").arg(QString::fromStdString(m_heatmap->row_labels[size_t(cell->first)]),
+                                                QString::fromStdString(m_heatmap->column_labels[size_t(cell->second)]))
                            .arg(m_heatmap->at(cell->first, cell->second), 0, 'f', 3),
                        this);
 }
@@ -108,7 +111,7 @@ HeatmapPanel::HeatmapPanel(QWidget* parent) : QWidget(parent) {
     auto* layout = new QVBoxLayout(this);
     auto* top = new QHBoxLayout;
     m_kind = new QComboBox(this);
-    m_kind->addItems({tr("Cluster centroids"), tr("Poses (sampled)")});
+    m_kind->addItems({tr("Cluster centroids"), tr("Poses (sampled)"), tr("Selected clip vs clusters")});
     m_title = new QLabel(tr("no database baked yet"), this);
     top->addWidget(m_kind);
     top->addWidget(m_title, 1);
@@ -146,24 +149,34 @@ void HeatmapPanel::set_database(std::shared_ptr<const MotionDatabaseContent> dat
     rebuild();
 }
 
+void HeatmapPanel::set_selected_clip(const std::string& clip_name) {
+    if (clip_name == m_selected_clip) return;
+    m_selected_clip = clip_name;
+    if (m_kind->currentIndex() == 2) rebuild();
+}
+
 void HeatmapPanel::rebuild() {
     m_pair.reset();
     m_cell->clear();
     m_go_a->setEnabled(false);
     m_go_b->setEnabled(false);
-    m_view->set_heatmap(nullptr);
+    m_view->set_heatmap(nullptr, tr("Bake the file (File > Bake...) to see its pose distances"));
     if (!m_database) return;
-    m_heatmap = m_kind->currentIndex() == 0 ? pose_heatmap_of_clusters(m_database->view())
-                                            : pose_heatmap_of_poses(m_database->view(), k_max_pose_rows);
-    m_view->set_heatmap(&m_heatmap);
+    switch (m_kind->currentIndex()) {
+    case 0: m_heatmap = pose_heatmap_of_clusters(m_database->view()); break;
+    case 1: m_heatmap = pose_heatmap_of_poses(m_database->view(), k_max_pose_rows); break;
+    default: m_heatmap = pose_heatmap_of_clip(m_database->view(), m_selected_clip); break;
+    }
+    m_view->set_heatmap(&m_heatmap, tr("Select a clip of the baked file: its poses (rows) against the clusters (columns)"));
 }
 
 void HeatmapPanel::show_cell(int row, int column) {
-    if (!m_database || row >= m_heatmap.size || column >= m_heatmap.size) return;
-    m_pair = std::pair{m_heatmap.poses[size_t(row)], m_heatmap.poses[size_t(column)]};
+    if (!m_database || row >= m_heatmap.rows || column >= m_heatmap.columns) return;
+    m_pair = std::pair{m_heatmap.row_poses[size_t(row)], m_heatmap.column_poses[size_t(column)]};
     const MotionDatabaseView view = m_database->view();
     m_cell->setText(tr("%1 vs %2: d = %3\nA: %4\nB: %5")
-                        .arg(QString::fromStdString(m_heatmap.labels[size_t(row)]), QString::fromStdString(m_heatmap.labels[size_t(column)]))
+                        .arg(QString::fromStdString(m_heatmap.row_labels[size_t(row)]),
+                             QString::fromStdString(m_heatmap.column_labels[size_t(column)]))
                         .arg(m_heatmap.at(row, column), 0, 'f', 3)
                         .arg(location_text(pose_location(view, m_pair->first)), location_text(pose_location(view, m_pair->second))));
     m_go_a->setEnabled(true);

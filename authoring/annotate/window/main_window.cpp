@@ -34,7 +34,10 @@ MainWindow::MainWindow(std::filesystem::path mocap_root, bool interactive, QWidg
     connect(&document, &AnnotationDocument::dirty_changed, this, &MainWindow::update_title);
     connect(&document, &AnnotationDocument::file_path_changed, this, &MainWindow::update_title);
     connect(&document, &AnnotationDocument::current_capture_changed, this, [this] { refresh_scene(true); });
-    connect(&document, &AnnotationDocument::selection_changed, this, [this] { refresh_scene(); });
+    connect(&document, &AnnotationDocument::selection_changed, this, [this](int index) {
+        m_heatmap->set_selected_clip(index >= 0 ? m_document->clip(index).name : std::string());
+        refresh_scene();
+    });
     connect(&document, &AnnotationDocument::clip_changed, this, [this] { refresh_scene(); });
     connect(&document, &AnnotationDocument::issues_changed, this, [this] {
         if (!m_document->issues().empty()) m_issues_dock->raise();
