@@ -5,6 +5,7 @@
 
 #include "heatmap_panel.h"
 #include "main_window.h"
+#include "scene_builder.h"
 #include "scene_view.h"
 #include "support/test_paths.h"
 #include "timeline_strip.h"
@@ -377,4 +378,26 @@ TEST_CASE("annotate window: a bake that fails (missing capture) reports it and w
     CHECK(warning.contains("missing.bvh"));
     CHECK(window.document().issues().size() == issues_before + 1);
     CHECK_FALSE(std::filesystem::exists(database));
+}
+
+TEST_CASE("annotate window: the trajectory is computed once per strike, not once per frame", "[annotate_window]") {
+    gui_application();
+    if (!have_captures()) { WARN("captures absent: skipped"); return; }
+    AnnotationDocument document(test::mocap_root());
+    REQUIRE(document.open_capture(QString::fromStdString((test::mocap_root() / k_kick_capture).string())));
+    const LoadedCapture& capture = *document.current_capture();
+    TrajectoryCache cache;
+    const StrikeOnShow strike{BodyPart::foot_r, 30, 60, 87, false};
+    const Result<ClipTrajectory>& first = cache.get(capture, strike);
+    REQUIRE(first);
+    const Eigen::Vector3d* points = first->points_world.data();
+    const Eigen::Vector3d first_contact = first->contact_world;
+    CHECK(cache.get(capture, strike)->points_world.data() == points); // the same storage: not recomputed
+    StrikeOnShow moved = strike;
+    moved.hit_frame = 61;
+    const Result<ClipTrajectory>& second = cache.get(capture, moved);
+    REQUIRE(second);
+    CHECK(second->contact_world != first_contact);
+    moved.hit_frame = 20; // before the in point
+    CHECK_FALSE(cache.get(capture, moved));
 }

@@ -21,7 +21,8 @@ namespace kumite::annotate {
 
 MainWindow::MainWindow(std::filesystem::path mocap_root, bool interactive, QWidget* parent)
     : QMainWindow(parent), m_document(std::make_unique<AnnotationDocument>(std::move(mocap_root))),
-      m_autosaver(std::make_unique<Autosaver>(*m_document)), m_interactive(interactive) {
+      m_autosaver(std::make_unique<Autosaver>(*m_document)), m_trajectories(std::make_unique<TrajectoryCache>()),
+      m_interactive(interactive) {
     setAcceptDrops(true);
     m_view = new view::SceneView(this);
     setCentralWidget(m_view);
@@ -148,8 +149,12 @@ void MainWindow::refresh_scene(bool frame_camera) {
         highlight = proposal.segment;
         strike = StrikeOnShow{proposal.segment, proposal.first_frame, proposal.hit_frame, proposal.last_frame, true};
     }
-    const std::optional<std::string> problem = scene_build(m_view->scene(), *capture, m_timeline->current_frame(), strike, highlight);
-    const QString message = problem ? tr("No trajectory: %1").arg(QString::fromStdString(*problem)) : QString();
+    const Result<ClipTrajectory>* trajectory = strike ? &m_trajectories->get(*capture, *strike) : nullptr;
+    const bool drawable = trajectory && trajectory->has_value();
+    scene_build(m_view->scene(), *capture, m_timeline->current_frame(), highlight, drawable ? &trajectory->value() : nullptr,
+                strike && strike->proposal);
+    const QString message =
+        trajectory && !drawable ? tr("No trajectory: %1").arg(QString::fromStdString(trajectory->error().message)) : QString();
     if (message != m_last_trajectory_message && !message.isEmpty()) statusBar()->showMessage(message, 5000);
     m_last_trajectory_message = message;
     if (frame_camera) m_view->frame_scene();

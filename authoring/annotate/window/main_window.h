@@ -24,6 +24,7 @@ class ClipPanel;
 class HeatmapPanel;
 class IssuesPanel;
 class TimelinePanel;
+class TrajectoryCache;
 struct PoseLocation;
 
 class MainWindow : public QMainWindow {
@@ -68,6 +69,7 @@ private:
 
     std::unique_ptr<AnnotationDocument> m_document;
     std::unique_ptr<Autosaver> m_autosaver;
+    std::unique_ptr<TrajectoryCache> m_trajectories;
     bool m_interactive = true;
     view::SceneView* m_view = nullptr;
     TimelinePanel* m_timeline = nullptr;

@@ -1,7 +1,5 @@
 #include "scene_builder.h"
 
-#include "clip_trajectory.h"
-
 #include "kumite/core/forward_kinematics.h"
 
 namespace kumite::annotate {
@@ -70,23 +68,28 @@ std::optional<BodyPart> scene_part_of_pick(const LoadedCapture& capture, int pic
     return std::nullopt;
 }
 
-std::optional<std::string> scene_build(view::Scene& scene, const LoadedCapture& capture, int frame,
-                                       const std::optional<StrikeOnShow>& strike, std::optional<BodyPart> highlight) {
+const Result<ClipTrajectory>& TrajectoryCache::get(const LoadedCapture& capture, const StrikeOnShow& strike) {
+    if (!m_trajectory || m_capture_path != capture.path || m_strike != strike) {
+        m_trajectory.emplace(clip_trajectory_compute(capture, strike.segment, strike.first_frame, strike.hit_frame, strike.last_frame));
+        m_capture_path = capture.path;
+        m_strike = strike;
+    }
+    return *m_trajectory;
+}
+
+void scene_build(view::Scene& scene, const LoadedCapture& capture, int frame, std::optional<BodyPart> highlight,
+                 const ClipTrajectory* trajectory, bool proposal) {
     scene.clear();
     const int frame_count = capture.file.clip.frame_count();
-    if (frame_count == 0) return std::string("the capture has no frames");
-    frame = std::clamp(frame, 0, frame_count - 1);
+    if (frame_count == 0) return;
     const double floor_y = capture.anatomy ? capture.anatomy->floor_y : 0.0;
-    add_skeleton(scene, capture, frame, floor_y, highlight);
-    if (!strike) return std::nullopt;
+    add_skeleton(scene, capture, std::clamp(frame, 0, frame_count - 1), floor_y, highlight);
+    if (!trajectory) return;
 
-    Result<ClipTrajectory> trajectory =
-        clip_trajectory_compute(capture, strike->segment, strike->first_frame, strike->hit_frame, strike->last_frame);
-    if (!trajectory) return trajectory.error().message;
     view::Polyline dots;
     dots.dots = true;
     dots.width_px = 5.0f;
-    dots.color = strike->proposal ? k_proposal_color : k_trajectory_color;
+    dots.color = proposal ? k_proposal_color : k_trajectory_color;
     for (const Eigen::Vector3d& point : trajectory->points_world) dots.points.push_back(lowered(point, floor_y));
     scene.polylines.push_back(std::move(dots));
     view::Sphere contact;
@@ -94,8 +97,7 @@ std::optional<std::string> scene_build(view::Scene& scene, const LoadedCapture& 
     contact.radius_m = float(std::max(0.03, 0.055 * capture.file.height_m / 1.7));
     contact.color = k_contact_color;
     scene.spheres.push_back(contact);
-    add_box_edges(scene, trajectory->box_corners_world, floor_y, strike->proposal ? k_proposal_color : k_box_color);
-    return std::nullopt;
+    add_box_edges(scene, trajectory->box_corners_world, floor_y, proposal ? k_proposal_color : k_box_color);
 }
 
 } // namespace kumite::annotate

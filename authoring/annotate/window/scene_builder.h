@@ -6,6 +6,7 @@
 // grid.
 
 #include "capture_library.h"
+#include "clip_trajectory.h"
 #include "scene.h"
 
 #include <optional>
@@ -18,11 +19,26 @@ struct StrikeOnShow {
     int hit_frame = 0;
     int last_frame = 0;
     bool proposal = false; // a suggestion not accepted yet: drawn in other colours
+
+    bool operator==(const StrikeOnShow&) const = default;
 };
 
-// Returns a message when the strike's trajectory could not be computed (the skeleton is still drawn).
-std::optional<std::string> scene_build(view::Scene& scene, const LoadedCapture& capture, int frame,
-                                       const std::optional<StrikeOnShow>& strike, std::optional<BodyPart> highlight);
+// The strike's trajectory, recomputed only when the capture or the strike changes (not at every frame of
+// playback: the start boxes cost hit_frame² point transforms).
+class TrajectoryCache {
+public:
+    const Result<ClipTrajectory>& get(const LoadedCapture& capture, const StrikeOnShow& strike);
+
+private:
+    std::filesystem::path m_capture_path;
+    std::optional<StrikeOnShow> m_strike;
+    std::optional<Result<ClipTrajectory>> m_trajectory;
+};
+
+// Replaces the scene by the capture's skeleton at `frame`, and when given, the strike's trajectory (dots, contact
+// sphere, box edges; a proposal in other colours).
+void scene_build(view::Scene& scene, const LoadedCapture& capture, int frame, std::optional<BodyPart> highlight,
+                 const ClipTrajectory* trajectory = nullptr, bool proposal = false);
 
 // The body part a picked capsule id (a joint) belongs to: the joint's own part, else its nearest mapped ancestor's.
 std::optional<BodyPart> scene_part_of_pick(const LoadedCapture& capture, int picked_joint);
