@@ -19,10 +19,12 @@
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFileDialog>
+#include <QFileInfo>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QMouseEvent>
 #include <QPushButton>
+#include <QStandardPaths>
 #include <QThread>
 #include <QTimer>
 
@@ -43,6 +45,7 @@ QApplication& gui_application() {
     static char name[] = "annotate_window_tests";
     static char* argv[] = {name, nullptr};
     qputenv("QT_QPA_PLATFORM", "offscreen");
+    QStandardPaths::setTestModeEnabled(true); // recent files go to a test QSettings, not the user's
     // Never destroyed: a QApplication torn down by static destruction, after Qt's own globals, crashes at exit.
     static QApplication* application = new QApplication(argc, argv);
     return *application;
@@ -66,34 +69,43 @@ bool wait_until(const std::function<bool()>& done, int timeout_ms = 10000) {
     return true;
 }
 
-// Answers the next modal dialog of type T with `answer`, from the event loop the dialog runs.
-// Gives up after 10 s so that an unused answer never clicks a later test's dialog.
+// Answers the next modal dialog of type T with `answer`, from the event loop the dialog runs; `answer` returns
+// false to be asked again at the next tick. Gives up after 10 s so that an unused answer never clicks a later
+// test's dialog.
 template <class T>
-void answer_next_dialog(std::function<void(T*)> answer) {
+void answer_next_dialog_when(std::function<bool(T*)> answer) {
     auto* timer = new QTimer(qApp);
     timer->setInterval(10);
     auto* age = new QElapsedTimer;
     age->start();
     QObject::connect(timer, &QTimer::destroyed, [age] { delete age; });
     QObject::connect(timer, &QTimer::timeout, [timer, answer, age] {
-        if (age->elapsed() > 10000) {
+        auto* dialog = qobject_cast<T*>(QApplication::activeModalWidget());
+        if (age->elapsed() > 10000 || (dialog && answer(dialog))) {
             timer->stop();
             timer->deleteLater();
-            return;
-        }
-        if (auto* dialog = qobject_cast<T*>(QApplication::activeModalWidget())) {
-            timer->stop();
-            timer->deleteLater();
-            answer(dialog);
         }
     });
     timer->start();
 }
 
+template <class T>
+void answer_next_dialog(std::function<void(T*)> answer) {
+    answer_next_dialog_when<T>([answer](T* dialog) {
+        answer(dialog);
+        return true;
+    });
+}
+
+// The file dialog fills its name field from the suggested path once its folder model has loaded, which under load
+// can come after a selection made too early: select until the dialog reports our file, then accept.
 void choose_file(const QString& path) {
-    answer_next_dialog<QFileDialog>([path](QFileDialog* dialog) {
+    answer_next_dialog_when<QFileDialog>([path](QFileDialog* dialog) {
         dialog->selectFile(path);
+        const QStringList selected = dialog->selectedFiles();
+        if (selected.size() != 1 || QFileInfo(selected[0]).absoluteFilePath() != QFileInfo(path).absoluteFilePath()) return false;
         QMetaObject::invokeMethod(dialog, "accept"); // protected in QFileDialog, a slot all the same
+        return true;
     });
 }
 
@@ -158,6 +170,7 @@ TEST_CASE("annotate window: three right kicks from suggestions, saved, baked, he
     choose_file(QString::fromStdString(saved.string()));
     REQUIRE(window.save());
     CHECK_FALSE(window.isWindowModified());
+    CHECK(document.file_path().toStdString() == saved.string());
     CHECK(read_text(saved) == annotations_write_string(document.annotations()));
     for (int index = 0; index < 3; ++index) CHECK(document.clip(index).source == k_kick_capture);
 
