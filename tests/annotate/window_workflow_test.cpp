@@ -414,3 +414,31 @@ TEST_CASE("annotate window: the trajectory is computed once per strike, not once
     moved.hit_frame = 20; // before the in point
     CHECK_FALSE(cache.get(capture, moved));
 }
+
+TEST_CASE("annotate window: from an empty annotation file, accepted kicks save into that file", "[annotate_window]") {
+    gui_application();
+    if (!have_captures()) { WARN("captures absent: skipped"); return; }
+    const std::filesystem::path root = temp_mocap_root("annotate-window-empty");
+    const std::filesystem::path file = root / "empty.json";
+    REQUIRE(annotations_write_file(file, RawAnnotations{}));
+    MainWindow window(root);
+    window.show();
+    REQUIRE(window.open_path(QString::fromStdString(file.string())));
+    CHECK(window.document().clip_count() == 0);
+    REQUIRE(window.open_path(QString::fromStdString((root / k_kick_capture).string())));
+    settle();
+    CHECK(click_accept_buttons(window, 10) == 3);
+    CHECK(window.isWindowModified());
+    REQUIRE(window.save()); // the file is known: no dialog
+    CHECK_FALSE(window.isWindowModified());
+    Result<RawAnnotations> saved = annotations_read_file(file);
+    REQUIRE(saved);
+    REQUIRE(saved->clips.size() == 3);
+    for (const RawAnnotatedClip& clip : saved->clips) {
+        CHECK(clip.semantics == "kick");
+        CHECK(clip.side == Side::right);
+        CHECK(clip.segment == BodyPart::foot_r);
+        CHECK(clip.source == k_kick_capture);
+    }
+    CHECK(read_text(file) == annotations_write_string(*saved));
+}
