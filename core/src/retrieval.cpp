@@ -163,8 +163,11 @@ bool Retriever::score_start(int pose_index, const RetrievalQuery& query, double 
     const Eigen::Vector3d target_in_start = query.heading.to_heading(query.target_world) / scale; // the paper's c_r
     const PoseInfo& info = m_poses[pose_index];
     double nearest = k_infinity;
-    int contact = static_cast<int>(start.frame);
-    for (int frame = static_cast<int>(start.frame); frame <= record.hit_frame; ++frame) {
+    // The contact is where the path passes nearest the target (the paper's), but never sooner than the lead
+    // after the start: a close target must not turn a telegraphed strike into a snap.
+    const int first_contact = std::min(static_cast<int>(start.frame) + m_settings.min_lead_frames, std::max(record.hit_frame, static_cast<int>(start.frame)));
+    int contact = first_contact;
+    for (int frame = first_contact; frame <= record.hit_frame; ++frame) {
         const DbPose& at = m_db.poses[record.first_pose + frame];
         const double distance = (to_start_heading(start, info.heading_cos, info.heading_sin, at.hit_point) - target_in_start).squaredNorm();
         if (distance < nearest) {

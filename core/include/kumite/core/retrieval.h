@@ -7,7 +7,7 @@
 //     d = w_pose * d_pose + w_target * d_target / leg_length_character
 // where d_pose is Kovar's distance between the current pose's feature and the candidate's, as an RMS over the
 // feature's points (leg lengths), and d_target the smallest distance in metres between the target and the hit
-// segment's path from the start to the hit, the path brought onto the character: expressed in the start's heading
+// segment's path from `min_lead_frames` after the start to the hit, the path brought onto the character: expressed in the start's heading
 // frame and scaled by size_character / size_actor (the paper's c_r = c * size_actor / size_character, applied to
 // the path instead of the target so that distances are the character's). The contact frame is where that distance
 // is smallest.
@@ -43,7 +43,7 @@ enum class RetrievalScaling {
 struct RetrievalSettings {
     double pose_weight = 1.0;
     double target_weight = 1.0;
-    int min_lead_frames = 3; // a start at least this many frames before the hit (0.1 s at 30 fps)
+    int min_lead_frames = 3; // a start at least this many frames before the hit and the contact (0.1 s at 30 fps)
     // Orders with at most this many candidate starts are scanned with the box bound alone: below it, computing
     // every centroid distance costs more than it saves (measured with tests/bench/retrieval_bench.cpp).
     int scan_below = 600;
