@@ -172,13 +172,28 @@ HeadingFrame Fighter::heading_towards_user() const {
     return heading;
 }
 
-void Fighter::start_clip(int clip, double t_s, bool face_user) {
+void Fighter::start_clip(int clip, double t_s, bool face_user, double step_scale) {
     m_blend_from = m_mir;
     m_blend_start_s = t_s;
     m_clip = clip;
     m_clip_start_s = t_s;
+    m_clip_scale = step_scale;
+    MirFrame& first = m_next_frame; // scratch
+    db_mir_frame_load(first, m_db.mir_frames[m_db.clips[clip].first_pose]);
+    m_clip_hip_start = first.hip_centre;
+    m_foot_pinned = {false, false};
+    m_foot_release_s = {-1e9, -1e9};
     const double leg = m_bodies[m_character]->rig->anatomy().leg_length;
     m_clip_to_world = clip_alignment(m_db, clip, 0, leg, face_user ? heading_towards_user() : m_heading);
+}
+
+double Fighter::clip_stride_m(int clip) const {
+    if (clip < 0) return 0.0;
+    const DbClip& c = m_db.clips[clip];
+    const DbMirFrame& first = m_db.mir_frames[c.first_pose];
+    const DbMirFrame& last = m_db.mir_frames[c.first_pose + c.frame_count - 1];
+    const double dx = last.hip_centre[0] - first.hip_centre[0], dz = last.hip_centre[2] - first.hip_centre[2];
+    return std::hypot(dx, dz) * leg_length();
 }
 
 void Fighter::play_clip(double t_s) {
@@ -192,6 +207,10 @@ void Fighter::play_clip(double t_s) {
         mir_frame_blend(m_mir, m_clip_frame, m_next_frame, index - whole);
         m_clip_frame = m_mir;
     }
+    if (m_clip_scale < 0.999) { // a shortened step: the hips travel less, the feet stay locked while planted
+        m_clip_frame.hip_centre.x() = m_clip_hip_start.x() + m_clip_scale * (m_clip_frame.hip_centre.x() - m_clip_hip_start.x());
+        m_clip_frame.hip_centre.z() = m_clip_hip_start.z() + m_clip_scale * (m_clip_frame.hip_centre.z() - m_clip_hip_start.z());
+    }
     mir_frame_move_on_floor(m_clip_frame, m_clip_to_world, leg);
     const double blend = m_settings.blend_s > 0.0 ? smoothstep((t_s - m_blend_start_s) / m_settings.blend_s) : 1.0;
     if (blend < 1.0) {
@@ -201,6 +220,54 @@ void Fighter::play_clip(double t_s) {
     }
     Body& body = *m_bodies[m_character];
     body.decoder.decode(m_pose, m_mir);
+    if (m_clip_scale < 0.999) lock_feet(t_s, clip.first_pose + whole);
+}
+
+void Fighter::lock_feet(double t_s, int pose) {
+    // A planted foot is pinned where it was when it landed; a foot that lifts carries the difference between its
+    // pin and the shortened step's path and sheds it over 0.3 s, so nothing jumps.
+    Body& body = *m_bodies[m_character];
+    const RestAnatomy& anatomy = body.rig->anatomy();
+    const auto positions = body.decoder.model_positions();
+    const std::uint32_t flags = m_db.poses[pose].flags;
+    const bool planted[2] = {(flags & db_pose_left_foot_planted) != 0, (flags & db_pose_right_foot_planted) != 0};
+    const int legs[2] = {int(Limb::leg_l), int(Limb::leg_r)};
+    m_pins = {};
+    for (int foot = 0; foot < 2; ++foot) {
+        const Eigen::Vector3d free_position = positions[anatomy.limbs[legs[foot]].extremity];
+        const double fade = 1.0 - smoothstep((t_s - m_foot_release_s[foot]) / 0.3);
+        const Eigen::Vector3d shown = free_position + fade * m_foot_release_offset[foot];
+        if (planted[foot] && !m_foot_pinned[foot]) {
+            m_foot_pinned[foot] = true;
+            m_foot_pin[foot] = shown;
+        } else if (!planted[foot] && m_foot_pinned[foot]) {
+            m_foot_pinned[foot] = false;
+            m_foot_release_offset[foot] = m_foot_pin[foot] - free_position;
+            m_foot_release_s[foot] = t_s;
+        }
+        if (m_foot_pinned[foot]) {
+            m_pins.pinned[legs[foot]] = true;
+            m_pins.extremity_world[legs[foot]] = m_foot_pin[foot];
+        } else {
+            m_pins.extremity_offset_world[legs[foot]] = (1.0 - smoothstep((t_s - m_foot_release_s[foot]) / 0.3)) * m_foot_release_offset[foot];
+        }
+    }
+    body.decoder.decode(m_pose, m_mir, m_pins);
+    body.encoder.encode(m_mir, m_pose.view()); // the next blend starts from what is shown
+}
+
+double Fighter::strike_reach_m() const {
+    const Body& body = *m_bodies[m_character];
+    const RestAnatomy& anatomy = body.rig->anatomy();
+    const auto positions = body.decoder.model_positions();
+    double reach = 0.0;
+    for (const Limb arm : {Limb::arm_l, Limb::arm_r}) {
+        const LimbChain& limb = anatomy.limbs[int(arm)];
+        const Eigen::Vector3d shoulder = m_heading.to_heading(positions[limb.root]);
+        const double span = 0.9 * limb.length(), rise = m_head.y() - positions[limb.root].y();
+        if (std::abs(rise) < span) reach = std::max(reach, shoulder.z() + std::sqrt(span * span - rise * rise));
+    }
+    return reach > 0.0 ? reach + 0.1 * anatomy.leg_length : 0.0;
 }
 
 void Fighter::start_strike(double t_s) {
@@ -335,20 +402,29 @@ void Fighter::step(double t_s, const Eigen::Vector3d* head) {
 
     const DbClip& clip = m_db.clips[m_clip];
     const bool clip_over = t_s - m_clip_start_s >= (clip.frame_count - 1) * double(m_db.meta.frame_time_s);
+    // The band where strikes reach: its far end comes in when the arms cannot reach the head from there, but the
+    // band stays a quarter leg wide so a shortened step lands inside it.
+    const double leg = leg_length(), near_m = m_settings.near_legs * leg;
+    const double far_m = m_tracking ? std::clamp(strike_reach_m(), near_m + 0.25 * leg, m_settings.far_legs * leg) : m_settings.far_legs * leg;
     // Resting out of range: step without waiting for the guard loop to end.
     const bool out_of_range = m_state == FighterState::rest && m_tracking && t_s - m_state_since_s >= m_settings.blend_s &&
-                              (distance_to_user() > m_settings.far_legs * leg_length() || distance_to_user() < m_settings.near_legs * leg_length());
+                              (distance_to_user() > far_m || distance_to_user() < near_m);
     if (clip_over || out_of_range) {
         if (m_state == FighterState::approach) enter(FighterState::rest, t_s);
-        // At each loop of the guard: step towards the distance band, or keep guarding, facing the user.
+        // At each loop of the guard: step towards the middle of the band, or keep guarding, facing the user.
         int next = m_guard_clip;
+        double scale = 1.0;
         if (m_state == FighterState::rest && m_tracking) {
-            const double leg = leg_length(), distance = distance_to_user();
-            if (distance > m_settings.far_legs * leg && m_step_clips[0] >= 0) next = m_step_clips[0];
-            else if (distance < m_settings.near_legs * leg && m_step_clips[1] >= 0) next = m_step_clips[1];
-            if (next != m_guard_clip) enter(FighterState::approach, t_s);
+            const double distance = distance_to_user(), middle = 0.5 * (near_m + far_m);
+            if (distance > far_m && m_step_clips[0] >= 0) next = m_step_clips[0];
+            else if (distance < near_m && m_step_clips[1] >= 0) next = m_step_clips[1];
+            if (next != m_guard_clip) {
+                const double stride = clip_stride_m(next);
+                if (stride > 1e-3) scale = std::clamp(std::abs(distance - middle) / stride, m_settings.min_step_scale, 1.0);
+                enter(FighterState::approach, t_s);
+            }
         }
-        start_clip(next, t_s, m_tracking);
+        start_clip(next, t_s, m_tracking, scale);
     }
     play_clip(t_s);
     finish_frame();

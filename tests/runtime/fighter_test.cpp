@@ -26,7 +26,8 @@ struct Bout {
     std::unique_ptr<Fighter> fighter;
     std::vector<FighterEvent> events;
 
-    explicit Bout(const MotionDatabaseView& database) : db(database), brawler("brawler", database), giant("giant", database) {
+    explicit Bout(const MotionDatabaseView& database, const std::string& first = "brawler")
+        : db(database), brawler(first, database), giant("giant", database) {
         settings.min_lead_frames = 12; // 0.4 s, as kumite play
         retriever = std::make_unique<Retriever>(db, settings);
         fighter = std::make_unique<Fighter>(db, *retriever, std::vector<CharacterRig*>{brawler.rig.get(), giant.rig.get()});
@@ -51,8 +52,8 @@ struct Bout {
 };
 
 // A bout of 40 s with an order every 2.5 s from t = 4 s against a simulated user.
-std::vector<FighterEvent> bout(const MotionDatabaseView& db, SimulatedKind kind, std::uint64_t seed) {
-    Bout b(db);
+std::vector<FighterEvent> bout(const MotionDatabaseView& db, SimulatedKind kind, std::uint64_t seed, const std::string& character = "brawler") {
+    Bout b(db, character);
     SimulatedUser user(kind, seed);
     int orders = 0;
     for (int frame = 0; frame < 40 * 60; ++frame) {
@@ -89,6 +90,63 @@ TEST_CASE("fighter: a still user is hit, a dodging one missed, every order strik
         if (kind == SimulatedKind::still) CHECK(hits >= 0.9 * strikes);
         else CHECK(hits <= 0.1 * strikes);
     }
+}
+
+TEST_CASE("fighter: shorter and taller fighters keep a still user's head within reach and hit it", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    if (!content) return;
+    // The scout (1.61 m) must come closer to a 1.65 m head than the runner (1.84 m) to reach it with a fist.
+    for (const char* character : {"scout", "runner"}) {
+        for (SimulatedKind kind : {SimulatedKind::still, SimulatedKind::dodge}) {
+            const std::vector<FighterEvent> events = bout(content->view(), kind, 5, character);
+            int strikes = 0, hits = 0;
+            for (const FighterEvent& e : events) {
+                strikes += e.type == FighterEvent::Type::strike;
+                hits += e.type == FighterEvent::Type::strike && e.hit;
+            }
+            INFO(character << (kind == SimulatedKind::still ? " still: " : " dodge: ") << strikes << " strikes, " << hits << " hits");
+            CHECK(strikes == 15);
+            if (kind == SimulatedKind::still) CHECK(hits >= 0.9 * strikes);
+            else CHECK(hits <= 0.1 * strikes);
+        }
+    }
+}
+
+TEST_CASE("fighter: shortened steps keep a planted foot where it landed", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    if (!content) return;
+    Bout b(content->view(), "scout");
+    const RestAnatomy& anatomy = b.brawler.anatomy; // the first character: the scout here
+    const int ankles[2] = {anatomy.limbs[int(Limb::leg_l)].extremity, anatomy.limbs[int(Limb::leg_r)].extremity};
+    // The user hops 35 cm towards and away from the fighter every 3 s: it must shorten its steps.
+    int approach_frames = 0;
+    double sliding_m = 0.0, travelled_m = 0.0;
+    std::array<Eigen::Vector3d, 2> previous;
+    bool had_previous = false;
+    for (int frame = 0; frame < 30 * 60; ++frame) {
+        const double t = frame / 60.0;
+        const Eigen::Vector3d head(0.0, 1.65, int(t / 3.0) % 2 ? 0.95 : 1.3); // 35 cm: less than a stride
+        b.fighter->step(t, &head);
+        b.fighter->clear_events();
+        const auto positions = b.fighter->positions();
+        std::array<Eigen::Vector3d, 2> feet{positions[ankles[0]], positions[ankles[1]]};
+        if (had_previous && b.fighter->state() == FighterState::approach) {
+            ++approach_frames;
+            for (int foot = 0; foot < 2; ++foot) {
+                const Eigen::Vector3d moved = feet[foot] - previous[foot];
+                const double horizontal = std::hypot(moved.x(), moved.z());
+                travelled_m += horizontal;
+                // A foot that does not rise is planted: it should not slide.
+                if (std::abs(moved.y()) < 1e-4 && feet[foot].y() < anatomy.ankle_height + anatomy.floor_y + 0.03) sliding_m += horizontal;
+            }
+        }
+        previous = feet;
+        had_previous = true;
+    }
+    INFO(approach_frames << " approach frames, feet travelled " << travelled_m << " m, slid " << sliding_m << " m");
+    REQUIRE(approach_frames > 60);
+    CHECK(travelled_m > 0.2);
+    CHECK(sliding_m < 0.03 * travelled_m); // measured: 1.2% locked, 5.7% without the locking
 }
 
 TEST_CASE("fighter: the same bout with the same seed gives the same events", "[runtime][corpus]") {

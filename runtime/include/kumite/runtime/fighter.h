@@ -29,8 +29,9 @@ struct FighterSettings {
     double tracker_timeout_s = 0.5;
     double hold_s = 1.0;
     double near_legs = 0.35;         // the distance band to the user (horizontal, from the pelvis) where strikes
-    double far_legs = 1.05;          // reach, in leg lengths; wider than one step clip (~0.65 legs), or stepping
-                                     // in overshoots out the other side and the fighter oscillates
+    double far_legs = 1.05;          // reach, in leg lengths; the far end comes closer when the arms cannot reach
+                                     // the head from there (a short fighter, a tall user): see strike_reach_m()
+    double min_step_scale = 0.15;    // steps are shortened to land mid-band (feet locked), down to this fraction
     double blend_s = 0.2;
     double recover_s = 0.3;
     double start_x_m = 0.0;          // where the fighter starts on the floor: x, facing +Z (side by side)
@@ -82,6 +83,10 @@ public:
     int strike_clip() const { return m_plan.clip; }
     const StrikePlan& strike_plan() const { return m_plan; } // valid while striking
     double leg_length() const; // of the current character
+    // How far from the pelvis (horizontally, metres) the arms reach the user's head from the current pose: the
+    // shoulder's lead plus what 90% of the arm spans at the head's height above the shoulder, plus a lean of
+    // 0.1 leg lengths. Zero reach when the head is beyond the arms (a kid against an adult).
+    double strike_reach_m() const;
 
     std::span<const FighterEvent> events() const { return {m_events.data(), std::size_t(m_event_count)}; }
     void clear_events() { m_event_count = 0; }
@@ -91,7 +96,9 @@ private:
     void push_event(const FighterEvent& event);
     void emit_ignored(double t_s, const char* why); // the pending order, ignored
     void enter(FighterState state, double t_s);
-    void start_clip(int clip, double t_s, bool face_user);
+    void start_clip(int clip, double t_s, bool face_user, double step_scale = 1.0);
+    void lock_feet(double t_s, int pose); // foot locking for shortened steps
+    double clip_stride_m(int clip) const; // how far a clip moves the hips, on the current character
     void play_clip(double t_s);
     void start_strike(double t_s);
     void begin_strike(); // the current body's adapter on m_plan, from m_strike_start
@@ -126,6 +133,13 @@ private:
     int m_clip = -1;
     double m_clip_start_s = 0.0;
     FloorAlignment m_clip_to_world;
+    double m_clip_scale = 1.0;                   // horizontal scale of the clip's hip path (shortened steps)
+    Eigen::Vector3d m_clip_hip_start = Eigen::Vector3d::Zero();
+    std::array<bool, 2> m_foot_pinned{};         // [left, right]
+    std::array<Eigen::Vector3d, 2> m_foot_pin{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+    std::array<Eigen::Vector3d, 2> m_foot_release_offset{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+    std::array<double, 2> m_foot_release_s{-1e9, -1e9};
+    LimbPins m_pins;
     MirFrame m_blend_from;
     double m_blend_start_s = -1e9;
     // the strike
