@@ -201,7 +201,13 @@ void ClipPanel::refresh_fields() {
     const int selected = m_document.selected_clip();
     m_fields->setEnabled(selected >= 0);
     m_remove->setEnabled(selected >= 0);
-    if (selected < 0) {
+    if (selected < 0) { // empty fields: nothing to suggest a value that is not there
+        const QSignalBlocker b1(m_name), b2(m_semantics), b3(m_side), b4(m_segment);
+        m_name->clear();
+        m_source->clear();
+        m_semantics->setCurrentIndex(-1);
+        m_side->setCurrentIndex(-1);
+        m_segment->setCurrentIndex(-1);
         m_messages->clear();
         return;
     }
