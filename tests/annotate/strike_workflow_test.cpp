@@ -14,6 +14,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <fstream>
+#include <iterator>
+
 using namespace kumite;
 using namespace kumite::annotate;
 
@@ -103,6 +106,17 @@ TEST_CASE("strike workflow: the saved file bakes with `kumite bake`, the window'
     accept_right_kicks(document);
     const std::filesystem::path saved = folder / "kicks.json";
     REQUIRE(document.save_as(QString::fromStdString(saved.string())));
+
+    // Byte for byte what `kumite suggest --write-annotations` writes for the same capture (its 3 strikes).
+    const test::CommandOutput suggest = test::run_command((test::bin_dir() / "kumite").string() + " suggest " + k_kick_capture +
+                                                          " --mocap-root " + test::mocap_root().string() + " --write-annotations " +
+                                                          (folder / "suggested.json").string());
+    REQUIRE(suggest.status == 0);
+    CHECK(document.text() == annotations_write_string(annotations_read_file(folder / "suggested.json").value()));
+    std::ifstream suggested_stream(folder / "suggested.json", std::ios::binary), saved_stream(saved, std::ios::binary);
+    const std::string suggested_text((std::istreambuf_iterator<char>(suggested_stream)), std::istreambuf_iterator<char>());
+    const std::string saved_text((std::istreambuf_iterator<char>(saved_stream)), std::istreambuf_iterator<char>());
+    CHECK(saved_text == suggested_text);
 
     const test::CommandOutput cli = test::run_command((test::bin_dir() / "kumite").string() + " bake " + saved.string() + " -o " +
                                                       (folder / "cli.kdb").string() + " --mocap-root " + test::mocap_root().string());
