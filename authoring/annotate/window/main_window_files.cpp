@@ -94,7 +94,7 @@ void MainWindow::offer_recovery(const QString& opened_path, bool is_capture) {
     const QMessageBox::StandardButton answer = QMessageBox::question(
         this, tr("Recover unsaved edits?"),
         tr("%1 holds edits that were never saved (the window closed or crashed).\n\nRecover them? They stay unsaved "
-           "until you save; Discard deletes them.")
+           "until you save. Discard deletes them; Ignore leaves the file until the next autosave replaces it.")
             .arg(sidecar),
         QMessageBox::Yes | QMessageBox::Discard | QMessageBox::Ignore, QMessageBox::Yes);
     if (answer == QMessageBox::Discard) {
