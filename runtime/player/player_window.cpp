@@ -41,7 +41,8 @@ public:
         m_view->set_projection(settings.camera);
         m_view->set_stereo(settings.stereo);
         m_view->orbit_camera().target = {0.0f, 1.0f, 0.75f};
-        m_view->orbit_camera().distance_m = 5.0f;
+        m_view->orbit_camera().distance_m = 4.5f;
+        m_view->orbit_camera().yaw_rad = 1.2f; // from the side: fighter and user both in view
         m_view->set_overlay([this](QPainter& painter, const QRect& rect) { draw_hud(painter, rect); });
         m_view->setFocusPolicy(Qt::NoFocus);
         setFocusPolicy(Qt::StrongFocus);
@@ -88,8 +89,9 @@ private:
     }
 
     void tick() {
-        // Bout time runs on the wall clock, minus the time spent paused; frames due are stepped, a long stall
-        // (a debugger, a dragged window) is skipped rather than replayed.
+        // Bout time runs on the wall clock, minus the time spent paused; every frame due is stepped (a slow
+        // paint is caught up), only a stall of more than a second (a debugger, a suspended process) is skipped
+        // rather than replayed, and its frames are counted as missed.
         if (!m_clock.isValid()) { // bout time starts with the first tick, once the window is up
             m_clock.start();
             m_fps_clock.start();
@@ -101,9 +103,14 @@ private:
         m_last_wall_s = wall_s;
         const double bout_s = wall_s - m_paused_s;
         const double frame_s = 1.0 / m_bout.rate_hz();
-        if (bout_s - m_next_s > 0.25) m_next_s = bout_s;
+        if (bout_s - m_next_s > 1.0) {
+            const long long skipped = static_cast<long long>((bout_s - m_next_s) * m_bout.rate_hz());
+            m_bout.count_missed_frames(skipped);
+            m_next_s += double(skipped) / m_bout.rate_hz();
+        }
         bool stepped = false;
-        while (!m_paused && m_next_s <= bout_s) {
+        const bool limited = m_options.stop_after_duration;
+        while (!m_paused && m_next_s <= bout_s && !(limited && m_next_s >= m_options.duration_s - 1e-9)) {
             m_bout.step(m_next_s);
             if (m_after_step) m_after_step();
             for (const BoutEvent& event : m_bout.events()) describe(event);
@@ -111,7 +118,7 @@ private:
             stepped = true;
             if (m_bout.quit_requested()) break;
         }
-        if (m_bout.quit_requested() || (m_options.stop_after_duration && bout_s >= m_options.duration_s)) {
+        if (m_bout.quit_requested() || (limited && m_next_s >= m_options.duration_s - 1e-9)) {
             m_timer.stop();
             finish();
             return;

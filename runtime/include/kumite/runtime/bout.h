@@ -64,6 +64,9 @@ public:
     // One frame at time t: commands due, the head, every fighter. Afterwards events() holds this frame's events.
     void step(double t_s);
 
+    // Frames the caller could not step in time and skipped (a real-time loop that stalled).
+    void count_missed_frames(long long frames) { m_counters.missed_frames += frames; }
+
     std::span<const BoutEvent> events() const { return m_events; }
     const BoutCounters& counters() const { return m_counters; }
     bool quit_requested() const { return m_quit; }
