@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The main job, from a fresh machine: install what is missing, fetch the captures, build, then show what kumite
 # reads from the reference kick capture, retarget it, bake the reference database, retrieve and adapt a strike,
-# and run a 30 s headless bout (the viewer arrives with the player issue).
+# run a 30 s headless bout and, when a display is present, open the viewer on the same bout.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/setup.sh"
@@ -38,3 +38,12 @@ build/bin/kumite play build/demo/ref.kdb --character brawler --tracker simulate:
   --commands script:data/bouts/demo.txt --events build/demo/bout.jsonl --record build/demo/bout.bvh \
   --report build/demo/bout.json
 cat build/demo/bout.json
+if [[ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]]; then
+  echo
+  echo "== kumite play in the viewer (keys on screen: 1-6 strike, C character, V head-coupled camera, Esc quits)"
+  build/bin/kumite play build/demo/ref.kdb --character brawler --tracker simulate:wander \
+    --commands script:data/bouts/demo.txt
+else
+  echo
+  echo "(no display: the viewer would open here; try it with: xvfb-run -a scripts/demo.sh, or on a desktop)"
+fi
