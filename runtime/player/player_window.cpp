@@ -124,14 +124,7 @@ private:
             return;
         }
         if (!stepped) return;
-        if (m_view->projection() == Projection::head_coupled) {
-            if (const Eigen::Vector3d* head = m_bout.head()) {
-                HeadCoupling coupling = m_view->head_coupling();
-                coupling.eye_world = head->cast<float>();
-                m_view->set_head_coupling(coupling);
-            }
-        }
-        player_scene_build(m_bout, m_view->scene());
+        refresh_scene();
         ++m_frames_drawn;
         const double fps_elapsed = m_fps_clock.nsecsElapsed() * 1e-9;
         if (fps_elapsed >= 0.5) {
@@ -142,9 +135,25 @@ private:
         m_view->update();
     }
 
+    // The scene of the bout's current frame; seen from the user's own eyes (head-coupled), the eye follows the
+    // head and the head (with a target latched on it) is left out, or it would cover the whole view.
+    void refresh_scene() {
+        const bool from_the_eyes = m_view->projection() == Projection::head_coupled;
+        if (const Eigen::Vector3d* head = m_bout.head(); head && from_the_eyes) {
+            HeadCoupling coupling = m_view->head_coupling();
+            coupling.eye_world = head->cast<float>();
+            m_view->set_head_coupling(coupling);
+        }
+        player_scene_build(m_bout, m_view->scene());
+        if (from_the_eyes) {
+            const Eigen::Vector3f eye = m_view->head_coupling().eye_world;
+            std::erase_if(m_view->scene().spheres, [&](const Sphere& s) { return (s.center - eye).norm() < s.radius_m + 0.1f; });
+        }
+    }
+
     void finish() {
         if (!m_options.screenshot_path.empty()) {
-            player_scene_build(m_bout, m_view->scene());
+            refresh_scene();
             const QImage image = m_view->grab_image();
             if (!image.save(QString::fromStdString(m_options.screenshot_path), "PNG")) {
                 std::fprintf(stderr, "kumite play: cannot write the screenshot %s\n", m_options.screenshot_path.c_str());

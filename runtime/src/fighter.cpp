@@ -411,11 +411,12 @@ void Fighter::step(double t_s, const Eigen::Vector3d* head) {
                               (distance_to_user() > far_m || distance_to_user() < near_m);
     if (clip_over || out_of_range) {
         if (m_state == FighterState::approach) enter(FighterState::rest, t_s);
-        // At each loop of the guard: step towards the middle of the band, or keep guarding, facing the user.
+        // At each loop of the guard: step into the band, or keep guarding, facing the user.
         int next = m_guard_clip;
         double scale = 1.0;
         if (m_state == FighterState::rest && m_tracking) {
-            const double distance = distance_to_user(), middle = 0.5 * (near_m + far_m);
+            // Land in the far part of the band: in reach, without crowding the user's face.
+            const double distance = distance_to_user(), middle = near_m + m_settings.landing_in_band * (far_m - near_m);
             if (distance > far_m && m_step_clips[0] >= 0) next = m_step_clips[0];
             else if (distance < near_m && m_step_clips[1] >= 0) next = m_step_clips[1];
             if (next != m_guard_clip) {

@@ -31,7 +31,8 @@ struct FighterSettings {
     double near_legs = 0.35;         // the distance band to the user (horizontal, from the pelvis) where strikes
     double far_legs = 1.05;          // reach, in leg lengths; the far end comes closer when the arms cannot reach
                                      // the head from there (a short fighter, a tall user): see strike_reach_m()
-    double min_step_scale = 0.15;    // steps are shortened to land mid-band (feet locked), down to this fraction
+    double landing_in_band = 0.7;    // steps are shortened (feet locked) to land this far from near to far
+    double min_step_scale = 0.15;    // the shortest step, as a fraction of the clip's
     double blend_s = 0.2;
     double recover_s = 0.3;
     double start_x_m = 0.0;          // where the fighter starts on the floor: x, facing +Z (side by side)
