@@ -29,9 +29,9 @@ struct OrbitCamera {
 };
 
 struct ScreenCorners {
-    Eigen::Vector3f lower_left{-1.5f, 0.0f, -1.5f};
-    Eigen::Vector3f lower_right{1.5f, 0.0f, -1.5f};
-    Eigen::Vector3f upper_left{-1.5f, 2.25f, -1.5f};
+    Eigen::Vector3f lower_left{-1.5f, 0.0f, -0.5f}; // default: a 3 m x 2.25 m wall half a metre behind the fighter's start
+    Eigen::Vector3f lower_right{1.5f, 0.0f, -0.5f};
+    Eigen::Vector3f upper_left{-1.5f, 2.25f, -0.5f};
 };
 
 // The off-axis view and projection for `eye` looking at the screen. Eyes on the back side of the screen are

@@ -18,7 +18,7 @@ Eigen::Vector2f ndc_of(const ViewProjection& vp, const Eigen::Vector3f& p) {
 } // namespace
 
 TEST_CASE("view: the off-axis projection maps the screen's corners to the viewport's corners from any eye", "[player]") {
-    ScreenCorners screen; // 3 m x 2.25 m wall at z = -1.5
+    ScreenCorners screen; // 3 m x 2.25 m wall at z = -0.5
     const Eigen::Vector3f upper_right = screen.lower_right + (screen.upper_left - screen.lower_left);
     for (const Eigen::Vector3f& eye : {Eigen::Vector3f(0.0f, 1.1f, 1.0f), Eigen::Vector3f(-1.2f, 1.7f, 0.3f), Eigen::Vector3f(1.4f, 0.4f, 2.5f)}) {
         const ViewProjection vp = off_axis_view_projection(screen, eye, 0.05f, 50.0f);
@@ -30,7 +30,7 @@ TEST_CASE("view: the off-axis projection maps the screen's corners to the viewpo
     }
     // A point between the eye and the screen moves on the picture as the eye moves (motion parallax), a point
     // on the screen does not.
-    const Eigen::Vector3f on_screen(0.3f, 1.0f, -1.5f), in_room(0.3f, 1.0f, 0.0f);
+    const Eigen::Vector3f on_screen(0.3f, 1.0f, -0.5f), in_room(0.3f, 1.0f, 0.7f);
     const ViewProjection left = off_axis_view_projection(screen, {-0.5f, 1.6f, 1.5f}, 0.05f, 50.0f);
     const ViewProjection right = off_axis_view_projection(screen, {0.5f, 1.6f, 1.5f}, 0.05f, 50.0f);
     CHECK((ndc_of(left, on_screen) - ndc_of(right, on_screen)).norm() < 1e-4f);
