@@ -1,7 +1,8 @@
 // What a frame loop calls allocates nothing once set up: retrieval queries (with the caller's workspace) and
-// adapting a strike frame by frame (after the adapter's first strike).
+// adapting a strike frame by frame (after the adapter's first strike), the fighter and a whole bout's step.
 
 #include "kumite/core/strike_adaptation.h"
+#include "kumite/runtime/bout.h"
 #include "kumite/runtime/fighter.h"
 #include "kumite/formats/bvh_reader.h"
 #include "kumite/formats/motion_database_file.h"
@@ -84,4 +85,27 @@ TEST_CASE("fighter: a step allocates nothing, through guard, strike, recovery an
         fighter.clear_events();
     }
     CHECK(scope.count() == 0);
+}
+
+TEST_CASE("bout: a step allocates nothing, with a dodging simulated user, orders and a character switch", "[core]") {
+    const MotionDatabase database = golden();
+    const kumite::test::StandingCharacter brawler("brawler", database.view());
+    const kumite::test::StandingCharacter giant("giant", database.view());
+    Result<std::unique_ptr<HeadTracker>> tracker = HeadTracker::open("simulate:dodge", DtrackConfig{}, 5);
+    REQUIRE(tracker);
+    Result<std::unique_ptr<Bout>> bout = Bout::create(database.view(), {{"brawler", brawler.file}, {"giant", giant.file}}, std::move(*tracker), BoutOptions{});
+    REQUIRE(bout);
+    (*bout)->step(0.0);
+    std::size_t events = 0;
+    kumite::test::AllocationScope scope;
+    for (int frame = 1; frame < 600; ++frame) {
+        if (frame == 120) CHECK((*bout)->command("punch left"));
+        if (frame == 130) CHECK((*bout)->command("character giant"));
+        if (frame == 300) CHECK((*bout)->command("kick"));
+        (*bout)->step(frame / 60.0);
+        events += (*bout)->events().size();
+    }
+    CHECK(scope.count() == 0);
+    CHECK((*bout)->counters().strikes == 2);
+    CHECK(events > 4);
 }
