@@ -29,6 +29,7 @@
 #include <QTimer>
 
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -71,7 +72,7 @@ bool wait_until(const std::function<bool()>& done, int timeout_ms = 10000) {
 
 // Answers the next modal dialog of type T with `answer`, from the event loop the dialog runs; `answer` returns
 // false to be asked again at the next tick. Gives up after 10 s so that an unused answer never clicks a later
-// test's dialog.
+// test's dialog; a dialog of that type still open then is rejected, so the test fails instead of hanging.
 template <class T>
 void answer_next_dialog_when(std::function<bool(T*)> answer) {
     auto* timer = new QTimer(qApp);
@@ -81,7 +82,12 @@ void answer_next_dialog_when(std::function<bool(T*)> answer) {
     QObject::connect(timer, &QTimer::destroyed, [age] { delete age; });
     QObject::connect(timer, &QTimer::timeout, [timer, answer, age] {
         auto* dialog = qobject_cast<T*>(QApplication::activeModalWidget());
-        if (age->elapsed() > 10000 || (dialog && answer(dialog))) {
+        const bool expired = age->elapsed() > 10000;
+        if (expired && dialog) {
+            std::fprintf(stderr, "test: gave up answering a %s, rejecting it\n", dialog->metaObject()->className());
+            QMetaObject::invokeMethod(dialog, "reject", Qt::QueuedConnection);
+        }
+        if (expired || (dialog && answer(dialog))) {
             timer->stop();
             timer->deleteLater();
         }
@@ -103,7 +109,10 @@ void choose_file(const QString& path) {
     answer_next_dialog_when<QFileDialog>([path](QFileDialog* dialog) {
         dialog->selectFile(path);
         const QStringList selected = dialog->selectedFiles();
-        if (selected.size() != 1 || QFileInfo(selected[0]).absoluteFilePath() != QFileInfo(path).absoluteFilePath()) return false;
+        if (selected.size() != 1 || QFileInfo(selected[0]).absoluteFilePath() != QFileInfo(path).absoluteFilePath()) {
+            std::fprintf(stderr, "test: the file dialog selects %s, waiting for %s\n", qPrintable(selected.join(", ")), qPrintable(path));
+            return false;
+        }
         QMetaObject::invokeMethod(dialog, "accept"); // protected in QFileDialog, a slot all the same
         return true;
     });
