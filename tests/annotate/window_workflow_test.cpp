@@ -24,6 +24,7 @@
 #include <QMimeData>
 #include <QMouseEvent>
 #include <QPushButton>
+#include <QSettings>
 #include <QStandardPaths>
 #include <QThread>
 #include <QTimer>
@@ -450,4 +451,9 @@ TEST_CASE("annotate window: from an empty annotation file, accepted kicks save i
         CHECK(clip.source == k_kick_capture);
     }
     CHECK(read_text(file) == annotations_write_string(*saved));
+    // Both files are in the recent list (QSettings, a test location here), newest first.
+    const QStringList recent = QSettings().value("recent_files").toStringList();
+    REQUIRE(recent.size() >= 2);
+    CHECK(recent[0] == QString::fromStdString((root / k_kick_capture).string()));
+    CHECK(recent[1] == QString::fromStdString(file.string()));
 }
