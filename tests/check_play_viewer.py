@@ -2,6 +2,8 @@
 """The player's viewer under Xvfb: `kumite play` without --headless opens the window, steps the bout in real time
 for a few seconds with two orders, saves a screenshot and exits. The report must say the viewer ran and the
 strikes happened; the screenshot must show the fighter (enough pixels of the fighter's colour) and the HUD.
+Then the wall-screen view: head-coupled from the simulated user's eyes, stereo side by side: the fighter must be
+in both halves.
 
 usage: check_play_viewer.py KUMITE DB.kdb OUTPUT_DIR      (exit 77: skipped when xvfb-run is not installed)
 """
@@ -74,6 +76,21 @@ def main():
     print(f"screenshot {width}x{height}: {fighter} fighter pixels, {hud} HUD pixels")
     assert fighter > 2000, "the fighter is not visible in the screenshot"
     assert hud > 200, "the HUD is not visible in the screenshot"
+
+    wall, wall_shot = os.path.join(out, "wall.json"), os.path.join(out, "wall.png")
+    open(wall, "w").write(json.dumps({"camera": "head_coupled", "stereo": "side_by_side", "screen": {
+        "lower_left": [-1.5, 0.0, -0.5], "lower_right": [1.5, 0.0, -0.5], "upper_left": [-1.5, 2.25, -0.5]}}))
+    command = ["xvfb-run", "-a", "-s", "-screen 0 1280x720x24", kumite, "play", database, "--tracker", "simulate:still",
+               "--viewer-config", wall, "--duration", "2", "--screenshot", wall_shot]
+    result = subprocess.run(command, capture_output=True, text=True, timeout=120)
+    print(result.stdout, result.stderr)
+    assert result.returncode == 0, f"kumite play (head-coupled) exited {result.returncode}"
+    rows = read_png(wall_shot)
+    half = len(rows[0]) // 2
+    left = sum(1 for row in rows for (r, g, b) in row[:half] if r > 120 and r > g + 30 and g > b + 25)
+    right = sum(1 for row in rows for (r, g, b) in row[half:] if r > 120 and r > g + 30 and g > b + 25)
+    print(f"head-coupled stereo: {left} fighter pixels in the left eye's half, {right} in the right eye's")
+    assert left > 1000 and right > 1000, "the fighter is not in both eyes' views"
     return 0
 
 
