@@ -72,8 +72,17 @@ TEST_CASE("screenshot: a malformed capture still renders, with the error on stde
     CHECK(std::filesystem::exists(folder / "shot.png"));
 }
 
-TEST_CASE("screenshot: an unknown flag exits with status 2", "[annotate]") {
+TEST_CASE("screenshot: an unknown flag exits with status 2, --help prints usage and exits 0", "[annotate]") {
     const test::CommandOutput run = run_annotate("--no-such-flag");
     CHECK(run.status == 2);
     CHECK_FALSE(run.err.empty());
+    for (const char* flag : {"--help", "--help-all"}) {
+        const test::CommandOutput help = run_annotate(flag);
+        CHECK(help.status == 0);
+        CHECK_THAT(help.out, Catch::Contains("--screenshot"));
+    }
+    // Flags are read before any window system is needed: usage and errors work without a display too.
+    const std::string no_display = "env -u DISPLAY -u WAYLAND_DISPLAY -u QT_QPA_PLATFORM " + (test::bin_dir() / "kumite-annotate").string();
+    CHECK(test::run_command(no_display + " --help").status == 0);
+    CHECK(test::run_command(no_display + " --no-such-flag").status == 2);
 }

@@ -9,12 +9,20 @@
 #include <QTimer>
 
 #include <cstdio>
+#include <optional>
 
-int main(int argc, char** argv) {
-    QApplication application(argc, argv);
-    QApplication::setOrganizationName(QStringLiteral("kumite"));
-    QApplication::setApplicationName(QStringLiteral("kumite-annotate"));
+namespace {
 
+struct CommandLine {
+    QStringList files;
+    QString screenshot;       // empty: no screenshot
+    std::optional<QString> mocap_root;
+};
+
+// Reads the flags with a plain QCoreApplication, so --help and bad flags need no display (Qt's own flags such as
+// -platform are not accepted; use QT_QPA_PLATFORM). Returns an exit status when the program should stop here.
+std::optional<int> parse_command_line(int argc, char** argv, CommandLine& line) {
+    QCoreApplication core(argc, argv);
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
         "The animator's window: open captures, trim them, tag strikes (hit segment, semantics, side, hit frame), check the\n"
@@ -29,28 +37,42 @@ int main(int argc, char** argv) {
                                         QStringLiteral("DIR"));
     parser.addOption(screenshot);
     parser.addOption(mocap_root);
-    if (!parser.parse(QApplication::arguments())) {
+    if (!parser.parse(QCoreApplication::arguments())) {
         std::fprintf(stderr, "kumite-annotate: %s (see --help)\n", qPrintable(parser.errorText()));
         return 2;
     }
-    if (parser.isSet(QStringLiteral("help"))) {
+    if (parser.isSet(QStringLiteral("help")) || parser.isSet(QStringLiteral("help-all"))) {
         std::printf("%s", qPrintable(parser.helpText()));
         return 0;
     }
+    line.files = parser.positionalArguments();
+    line.screenshot = parser.value(screenshot);
+    if (parser.isSet(mocap_root)) line.mocap_root = parser.value(mocap_root);
+    return std::nullopt;
+}
 
-    const bool taking_screenshot = parser.isSet(screenshot);
+} // namespace
+
+int main(int argc, char** argv) {
+    CommandLine line;
+    if (const std::optional<int> status = parse_command_line(argc, argv, line)) return *status;
+
+    QApplication application(argc, argv);
+    QApplication::setOrganizationName(QStringLiteral("kumite"));
+    QApplication::setApplicationName(QStringLiteral("kumite-annotate"));
+    const bool taking_screenshot = !line.screenshot.isEmpty();
     const std::filesystem::path root =
-        parser.isSet(mocap_root) ? std::filesystem::path(parser.value(mocap_root).toStdString()) : kumite::annotate::default_mocap_root();
+        line.mocap_root ? std::filesystem::path(line.mocap_root->toStdString()) : kumite::annotate::default_mocap_root();
     kumite::annotate::MainWindow window(root, /*interactive=*/!taking_screenshot);
     window.show();
-    for (const QString& path : parser.positionalArguments()) window.open_path(path);
+    for (const QString& path : line.files) window.open_path(path);
 
     if (taking_screenshot) {
         for (const kumite::annotate::Issue& issue : window.document().issues()) {
             std::fprintf(stderr, "kumite-annotate: %s%s%s\n", qPrintable(issue.file),
                          issue.line > 0 ? qPrintable(QStringLiteral(":%1: ").arg(issue.line)) : ": ", qPrintable(issue.message));
         }
-        const QString output = parser.value(screenshot);
+        const QString output = line.screenshot;
         int status = 0;
         // After the first paint of every widget: layouts settled, the viewport drawn.
         QTimer::singleShot(100, &window, [&] {
