@@ -20,7 +20,8 @@ Result<ClipTrajectory> clip_trajectory_compute(const LoadedCapture& capture, Bod
 
     ClipTrajectory result;
     result.points_world = trajectory.hit_points;
-    result.contact_world = trajectory.hit_points[static_cast<size_t>(hit_frame - first_frame)];
+    result.hit_index = hit_frame - first_frame;
+    result.contact_world = trajectory.hit_points[static_cast<size_t>(result.hit_index)];
     result.box_in_heading = trajectory.box_in_heading;
     if (!trajectory.start_boxes.empty()) {
         result.box_in_first_heading = trajectory.start_boxes.front();

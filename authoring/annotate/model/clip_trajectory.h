@@ -14,6 +14,7 @@ namespace kumite::annotate {
 
 struct ClipTrajectory {
     std::vector<Eigen::Vector3d> points_world;         // [frame - first_frame] the hit joint
+    int hit_index = 0;                                 // hit_frame - first_frame
     Eigen::Vector3d contact_world = Eigen::Vector3d::Zero();
     std::array<Eigen::Vector3d, 8> box_corners_world{}; // corner k: x from bit 0, y from bit 1, z from bit 2 (min/max)
     AlignedBox box_in_first_heading;                   // the path first..hit, first frame's heading frame

@@ -86,12 +86,19 @@ void scene_build(view::Scene& scene, const LoadedCapture& capture, int frame, st
     add_skeleton(scene, capture, std::clamp(frame, 0, frame_count - 1), floor_y, highlight);
     if (!trajectory) return;
 
-    view::Polyline dots;
-    dots.dots = true;
-    dots.width_px = 5.0f;
-    dots.color = proposal ? k_proposal_color : k_trajectory_color;
-    for (const Eigen::Vector3d& point : trajectory->points_world) dots.points.push_back(lowered(point, floor_y));
-    scene.polylines.push_back(std::move(dots));
+    // The path to the hit (what the box holds) in full colour, the recovery after it dimmer and smaller.
+    const view::Color color = proposal ? k_proposal_color : k_trajectory_color;
+    view::Polyline to_hit, after_hit;
+    to_hit.dots = after_hit.dots = true;
+    to_hit.width_px = 5.0f;
+    after_hit.width_px = 3.5f;
+    to_hit.color = color;
+    after_hit.color = color * 0.55f;
+    for (size_t index = 0; index < trajectory->points_world.size(); ++index) {
+        (int(index) <= trajectory->hit_index ? to_hit : after_hit).points.push_back(lowered(trajectory->points_world[index], floor_y));
+    }
+    scene.polylines.push_back(std::move(to_hit));
+    if (!after_hit.points.empty()) scene.polylines.push_back(std::move(after_hit));
     view::Sphere contact;
     contact.center = lowered(trajectory->contact_world, floor_y);
     contact.radius_m = float(std::max(0.03, 0.055 * capture.file.height_m / 1.7));

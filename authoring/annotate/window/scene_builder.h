@@ -1,9 +1,9 @@
 #pragma once
 // Fills the viewport's Scene from the document's state at one frame: the capture's skeleton as capsules (each
 // pickable by the joint its segment starts at, the hit segment highlighted), and for the strike on show (the
-// selected clip, or a previewed suggestion) the hit joint's trajectory as dots, the contact point as a sphere
-// and the hit-path box as twelve edges. Everything is lowered by the capture's floor height so it stands on the
-// grid.
+// selected clip, or a previewed suggestion) the hit joint's trajectory as dots (dimmer after the hit), the contact
+// point as a sphere and the hit-path box as twelve edges. Everything is lowered by the capture's floor height so
+// it stands on the grid.
 
 #include "capture_library.h"
 #include "clip_trajectory.h"
