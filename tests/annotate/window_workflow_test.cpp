@@ -457,3 +457,46 @@ TEST_CASE("annotate window: from an empty annotation file, accepted kicks save i
     CHECK(recent[0] == QString::fromStdString((root / k_kick_capture).string()));
     CHECK(recent[1] == QString::fromStdString(file.string()));
 }
+
+TEST_CASE("annotate window: the scene holds a capsule per bone, the strike's dots, contact and twelve box edges", "[annotate_window]") {
+    gui_application();
+    if (!have_captures()) { WARN("captures absent: skipped"); return; }
+    AnnotationDocument document(test::mocap_root());
+    REQUIRE(document.open_capture(QString::fromStdString((test::mocap_root() / k_kick_capture).string())));
+    const LoadedCapture& capture = *document.current_capture();
+    const Skeleton& skeleton = capture.file.clip.skeleton;
+    TrajectoryCache cache;
+    const StrikeOnShow strike{BodyPart::foot_r, 30, 60, 87, false};
+    const Result<ClipTrajectory>& trajectory = cache.get(capture, strike);
+    REQUIRE(trajectory);
+    view::Scene scene;
+    scene_build(scene, capture, 60, BodyPart::foot_r, &trajectory.value());
+    CHECK(int(scene.capsules.size()) == skeleton.joint_count() - 1 + int(skeleton.end_sites.size()));
+    REQUIRE(scene.spheres.size() == 1);
+    int dots = 0, edges = 0, dot_points = 0;
+    for (const view::Polyline& line : scene.polylines) {
+        if (line.dots) ++dots, dot_points += int(line.points.size());
+        else edges += line.points.size() == 2;
+    }
+    CHECK(dots == 2); // to the hit, after it
+    CHECK(dot_points == 87 - 30 + 1);
+    CHECK(edges == 12);
+    // The skeleton stands on the grid: the lowest point of any bone is near y = 0.
+    float lowest = 1e9f;
+    for (const view::Capsule& capsule : scene.capsules) lowest = std::min({lowest, capsule.a.y(), capsule.b.y()});
+    CHECK(std::abs(lowest) < 0.15f);
+    // Picking: a capsule's id is the joint its segment starts at; the right foot's bone names foot_r, highlighted.
+    const int ankle = capture.file.body_map.joint(BodyPart::foot_r);
+    CHECK(scene_part_of_pick(capture, ankle) == BodyPart::foot_r);
+    CHECK(scene_part_of_pick(capture, capture.file.body_map.joint(BodyPart::shin_r)) == BodyPart::shin_r);
+    // The hit segment's bones share one colour, every other bone another.
+    std::vector<view::Color> hit_colors, other_colors;
+    for (const view::Capsule& capsule : scene.capsules) {
+        (scene_part_of_pick(capture, capsule.id) == BodyPart::foot_r ? hit_colors : other_colors).push_back(capsule.color);
+    }
+    REQUIRE_FALSE(hit_colors.empty());
+    REQUIRE_FALSE(other_colors.empty());
+    for (const view::Color& color : hit_colors) CHECK(color == hit_colors.front());
+    for (const view::Color& color : other_colors) CHECK(color == other_colors.front());
+    CHECK(hit_colors.front() != other_colors.front());
+}
