@@ -256,7 +256,7 @@ TEST_CASE("annotate window: a hit-marker drag is one undo step, picking a bone s
     CHECK(document.clip(0).segment == BodyPart::foot_r);
 }
 
-TEST_CASE("annotate window: quitting with unsaved changes asks; Cancel keeps the window open", "[annotate_window]") {
+TEST_CASE("annotate window: quitting with unsaved changes asks, and Cancel keeps the window open", "[annotate_window]") {
     gui_application();
     if (!have_captures()) { WARN("captures absent: skipped"); return; }
     const std::filesystem::path root = temp_mocap_root("annotate-window-quit");
@@ -352,7 +352,7 @@ TEST_CASE("annotate window: a folder opens every capture, the first on show, the
     CHECK(document.current_capture()->source == punch);
 }
 
-TEST_CASE("annotate window: files dropped on the window open; a bad one becomes an issue", "[annotate_window]") {
+TEST_CASE("annotate window: files dropped on the window open, and a bad one becomes an issue", "[annotate_window]") {
     gui_application();
     if (!have_captures()) { WARN("captures absent: skipped"); return; }
     const std::filesystem::path root = temp_mocap_root("annotate-window-drop");
