@@ -8,7 +8,7 @@ install(TARGETS kumite_core kumite_formats kumite_runtime EXPORT kumiteTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY core/include/ formats/include/ runtime/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(TARGETS kumite RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS kumite kumite-annotate RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(EXPORT kumiteTargets NAMESPACE kumite:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/kumite)
 
 configure_package_config_file(${CMAKE_CURRENT_LIST_DIR}/kumiteConfig.cmake.in
