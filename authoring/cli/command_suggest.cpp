@@ -41,31 +41,6 @@ nlohmann::json strikes_json(const std::vector<StrikeSuggestion>& strikes) {
     return list;
 }
 
-// `path` relative to the mocap root when it lies under it, else as given.
-std::string source_relative_to_root(const std::filesystem::path& path, const std::filesystem::path& root) {
-    std::error_code error;
-    const std::filesystem::path absolute = std::filesystem::weakly_canonical(path, error);
-    const std::filesystem::path absolute_root = std::filesystem::weakly_canonical(root, error);
-    const std::filesystem::path relative = absolute.lexically_relative(absolute_root);
-    if (!error && !relative.empty() && *relative.begin() != "..") return relative.generic_string();
-    return path.generic_string();
-}
-
-RawAnnotatedClip clip_from_suggestion(const StrikeSuggestion& strike, const std::string& source) {
-    RawAnnotatedClip clip;
-    clip.source = source;
-    clip.name = std::filesystem::path(source).stem().string() + "_" + std::string(body_part_name(strike.segment)) + "_" +
-                std::to_string(strike.hit_frame);
-    clip.first_frame = strike.first_frame;
-    clip.last_frame = strike.last_frame;
-    clip.semantics = strike_semantics_name(strike.semantics);
-    clip.segment = strike.segment;
-    clip.side = strike.side;
-    clip.hit_frame = strike.hit_frame;
-    clip.mirror = true; // the captures hold one side of most strikes; the mirror gives the other
-    return clip;
-}
-
 } // namespace
 
 int run_suggest(int argc, char** argv) {

@@ -19,32 +19,6 @@ std::filesystem::path default_mocap_root() {
     return relative;
 }
 
-std::string source_relative_to_root(const std::filesystem::path& path, const std::filesystem::path& root) {
-    std::error_code error;
-    const std::filesystem::path absolute = std::filesystem::weakly_canonical(path, error);
-    if (error) return path.generic_string();
-    const std::filesystem::path absolute_root = std::filesystem::weakly_canonical(root, error);
-    if (error) return path.generic_string();
-    const std::filesystem::path relative = absolute.lexically_relative(absolute_root);
-    if (!relative.empty() && *relative.begin() != "..") return relative.generic_string();
-    return absolute.generic_string();
-}
-
-RawAnnotatedClip clip_from_suggestion(const StrikeSuggestion& strike, const std::string& source) {
-    RawAnnotatedClip clip;
-    clip.source = source;
-    clip.name = std::filesystem::path(source).stem().string() + "_" + std::string(body_part_name(strike.segment)) + "_" +
-                std::to_string(strike.hit_frame);
-    clip.first_frame = strike.first_frame;
-    clip.last_frame = strike.last_frame;
-    clip.semantics = strike_semantics_name(strike.semantics);
-    clip.segment = strike.segment;
-    clip.side = strike.side;
-    clip.hit_frame = strike.hit_frame;
-    clip.mirror = true; // as `kumite suggest`: the captures hold one side of most strikes, the mirror gives the other
-    return clip;
-}
-
 std::optional<int> hit_frame_suggest(const LoadedCapture& capture, BodyPart segment, int first_frame, int last_frame) {
     if (!capture.anatomy) return std::nullopt;
     auto best_in_range = [&](const std::vector<StrikeSuggestion>& strikes) -> std::optional<int> {

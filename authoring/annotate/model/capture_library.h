@@ -30,11 +30,7 @@ struct LoadedCapture {
 // (build-x/bin/kumite-annotate -> data/mocap), else "data/mocap".
 std::filesystem::path default_mocap_root();
 
-// `path` relative to `root` when it lies under it (symlinks resolved on both), else as given; '/' separators.
-std::string source_relative_to_root(const std::filesystem::path& path, const std::filesystem::path& root);
-
-// A suggestion as a clip of `source`, named and mirrored the way `kumite suggest --write-annotations` does.
-RawAnnotatedClip clip_from_suggestion(const StrikeSuggestion& strike, const std::string& source);
+// source_relative_to_root and clip_from_suggestion (kumite/formats/annotation_file.h) make a capture's clips.
 
 // The hit frame to propose for a clip of `capture` trimmed to first..last with this hit segment: the hit of a
 // punch/kick suggestion of that segment inside the range, else the strongest extension peak of the segment

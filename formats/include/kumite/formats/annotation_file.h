@@ -5,6 +5,7 @@
 
 #include "kumite/core/body_map.h"
 #include "kumite/core/result.h"
+#include "kumite/core/strike_detection.h"
 
 #include <filesystem>
 #include <optional>
@@ -48,5 +49,14 @@ Result<RawAnnotations> annotations_parse(std::string_view text, std::string_view
 Result<RawAnnotations> annotations_read_file(const std::filesystem::path& path);
 std::string annotations_write_string(const RawAnnotations& annotations);
 Result<void> annotations_write_file(const std::filesystem::path& path, const RawAnnotations& annotations); // atomic
+
+// What a clip's `source` holds for a capture: `path` relative to the mocap root when it lies under it (symlinks
+// resolved on both), else absolute; '/' separators.
+std::string source_relative_to_root(const std::filesystem::path& path, const std::filesystem::path& root);
+
+// A detected strike as a clip of `source`: named <capture stem>_<segment>_<hit frame> and mirrored (the captures
+// hold one side of most strikes; the mirror gives the other). `kumite suggest --write-annotations` and the
+// annotation window's Accept both make clips this way.
+RawAnnotatedClip clip_from_suggestion(const StrikeSuggestion& strike, const std::string& source);
 
 } // namespace kumite
