@@ -3,6 +3,7 @@
 #include <Eigen/LU>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace kumite::view {
@@ -41,6 +42,17 @@ int pick_capsule(const Scene& scene, const ViewProjection& vp, Eigen::Vector2f n
         }
     }
     return best;
+}
+
+std::vector<FloorLine> floor_grid_lines(float half) {
+    std::vector<FloorLine> lines;
+    const int cells = std::max(1, int(std::lround(half / 0.5f)));
+    for (int i = -cells; i <= cells; ++i) {
+        const float v = i * 0.5f;
+        lines.push_back({{v, 0, -half}, {v, 0, half}, i == 0});
+        lines.push_back({{-half, 0, v}, {half, 0, v}, i == 0});
+    }
+    return lines;
 }
 
 std::array<std::pair<Eigen::Vector3f, Eigen::Vector3f>, 12> wire_box_edges(const WireBox& box) {

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <utility>
+#include <vector>
 
 namespace kumite::view {
 
@@ -16,6 +17,14 @@ int pick_capsule(const Scene& scene, const ViewProjection& view_projection, Eige
 // World point -> normalized device coordinates and the eye-space depth (positive in front of the eye).
 // Returns false behind the eye.
 bool project_point(const ViewProjection& view_projection, const Eigen::Vector3f& world, Eigen::Vector2f& ndc, float& depth);
+
+// The floor grid: lines every 0.5 m over the square of half side `half_size_m`; `axis` marks the two through
+// the origin.
+struct FloorLine {
+    Eigen::Vector3f a, b;
+    bool axis = false;
+};
+std::vector<FloorLine> floor_grid_lines(float half_size_m);
 
 // The 12 edges of a wire box, in world.
 std::array<std::pair<Eigen::Vector3f, Eigen::Vector3f>, 12> wire_box_edges(const WireBox& box);

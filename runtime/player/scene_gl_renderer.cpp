@@ -186,13 +186,8 @@ void SceneGlRenderer::render(const Scene& scene, const ViewProjection& vp, const
     auto line = [&](const Eigen::Vector3f& a, const Eigen::Vector3f& b, const Color& color) {
         m_line_vertices.insert(m_line_vertices.end(), {a.x(), a.y(), a.z(), color.x(), color.y(), color.z(), b.x(), b.y(), b.z(), color.x(), color.y(), color.z()});
     };
-    const float half = scene.floor_half_size_m;
-    const int cells = std::max(1, int(std::lround(half / 0.5f)));
-    for (int i = -cells; i <= cells; ++i) {
-        const float v = i * 0.5f;
-        const Color color = i == 0 ? Color(0.43f, 0.46f, 0.53f) : Color(0.28f, 0.30f, 0.35f);
-        line({v, 0, -half}, {v, 0, half}, color);
-        line({-half, 0, v}, {half, 0, v}, color);
+    for (const FloorLine& floor : floor_grid_lines(scene.floor_half_size_m)) {
+        line(floor.a, floor.b, floor.axis ? Color(0.43f, 0.46f, 0.53f) : Color(0.28f, 0.30f, 0.35f));
     }
     for (const Polyline& polyline : scene.polylines) {
         if (polyline.dots) continue;

@@ -66,13 +66,9 @@ void paint_scene(QPainter& painter, const Scene& scene, const ViewProjection& vp
     const Projector projector{vp, viewport, vp.projection(1, 1) * 0.5f * float(viewport.height())};
 
     // The floor grid.
-    const float half = scene.floor_half_size_m;
-    const int cells = std::max(1, int(std::lround(half / 0.5f)));
-    for (int i = -cells; i <= cells; ++i) {
-        const float v = i * 0.5f;
-        const QPen pen(i == 0 ? QColor(110, 118, 135) : QColor(70, 76, 90), i == 0 ? 1.5 : 1.0);
-        draw_segment(painter, projector, {v, 0, -half}, {v, 0, half}, pen);
-        draw_segment(painter, projector, {-half, 0, v}, {half, 0, v}, pen);
+    for (const FloorLine& line : floor_grid_lines(scene.floor_half_size_m)) {
+        const QPen pen(line.axis ? QColor(110, 118, 135) : QColor(70, 76, 90), line.axis ? 1.5 : 1.0);
+        draw_segment(painter, projector, line.a, line.b, pen);
     }
 
     // Solids far to near.

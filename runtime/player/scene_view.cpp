@@ -174,8 +174,6 @@ void SceneView::paintEvent(QPaintEvent*) {
     if (m_overlay) m_overlay(painter, rect());
 }
 
-void SceneView::resizeEvent(QResizeEvent* event) { QWidget::resizeEvent(event); }
-
 void SceneView::mousePressEvent(QMouseEvent* event) {
     m_press_point = m_last_point = event->position().toPoint();
     m_button = event->button();
