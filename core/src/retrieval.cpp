@@ -88,17 +88,16 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
                     continue;
                 }
                 const DbPose& start = m_db.poses[pose];
+                const DbPose& hit = m_db.poses[m_db.clips[start.clip].first_pose + m_db.clips[start.clip].hit_frame];
+                const Eigen::Vector3d hit_in_start =
+                    to_start_heading(start, m_poses[pose].heading_cos, m_poses[pose].heading_sin, hit.hit_point) / clip.actor_scale_length;
                 Candidate candidate{};
-                for (int axis = 0; axis < 3; ++axis) {
-                    candidate.box_min[axis] = static_cast<float>(start.start_box_min[axis] / clip.actor_scale_length);
-                    candidate.box_max[axis] = static_cast<float>(start.start_box_max[axis] / clip.actor_scale_length);
-                }
+                for (int axis = 0; axis < 3; ++axis) candidate.hit_in_start[axis] = static_cast<float>(hit_in_start[axis]);
                 candidate.distance_to_centroid = m_poses[pose].distance_to_centroid;
                 candidate.pose = pose;
                 candidate.support_foot = clip.support_foot;
                 m_candidates.push_back(candidate);
-                m_group_boxes[group].extend(Eigen::Vector3d(candidate.box_min[0], candidate.box_min[1], candidate.box_min[2]));
-                m_group_boxes[group].extend(Eigen::Vector3d(candidate.box_max[0], candidate.box_max[1], candidate.box_max[2]));
+                m_group_boxes[group].extend(hit_in_start);
             }
         }
     }
@@ -162,27 +161,15 @@ bool Retriever::score_start(int pose_index, const RetrievalQuery& query, double 
     const double scale = scale_to_character(clip, query.character);
     const Eigen::Vector3d target_in_start = query.heading.to_heading(query.target_world) / scale; // the paper's c_r
     const PoseInfo& info = m_poses[pose_index];
-    double nearest = k_infinity;
-    // The contact is where the path passes nearest the target (the paper's), but never sooner than the lead
-    // after the start: a close target must not turn a telegraphed strike into a snap.
-    const int first_contact = std::min(static_cast<int>(start.frame) + m_settings.min_lead_frames, std::max(record.hit_frame, static_cast<int>(start.frame)));
-    int contact = first_contact;
-    for (int frame = first_contact; frame <= record.hit_frame; ++frame) {
-        const DbPose& at = m_db.poses[record.first_pose + frame];
-        const double distance = (to_start_heading(start, info.heading_cos, info.heading_sin, at.hit_point) - target_in_start).squaredNorm();
-        if (distance < nearest) {
-            nearest = distance;
-            contact = frame;
-        }
-    }
-    const double d_target_m = std::sqrt(nearest) * scale;
+    const DbPose& hit = m_db.poses[record.first_pose + record.hit_frame];
+    const double d_target_m = (to_start_heading(start, info.heading_cos, info.heading_sin, hit.hit_point) - target_in_start).norm() * scale;
     const double score = m_settings.pose_weight * d_pose + m_settings.target_weight * d_target_m / query.character.leg_length_m;
     if (!(score < best.score)) return false;
     best.found = true;
     best.clip = static_cast<int>(start.clip);
     best.start_pose = pose_index;
     best.start_frame = static_cast<int>(start.frame);
-    best.contact_frame = contact;
+    best.contact_frame = record.hit_frame;
     best.d_pose = d_pose;
     best.d_target_m = d_target_m;
     best.score = score;
@@ -219,11 +206,11 @@ void Retriever::visit_group(int group, bool arm, double centroid_distance, const
         if (!(pose_part < best.score)) continue;
         float squared = 0.0f;
         for (int axis = 0; axis < 3; ++axis) {
-            const float outside = std::max({candidate.box_min[axis] - target[axis], target[axis] - candidate.box_max[axis], 0.0f});
-            squared += outside * outside;
+            const float along = candidate.hit_in_start[axis] - target[axis];
+            squared += along * along;
         }
-        best.counts.inside_box += squared == 0.0f;
-        // Float box distances may fall short by rounding; the slack keeps the bound a bound.
+        best.counts.inside_box += squared < 0.01f;
+        // The float distance may differ from the exact one by rounding; the slack keeps the bound a bound.
         const double target_part = to_score * std::max(0.0, std::sqrt(static_cast<double>(squared)) - k_rounding_slack);
         if (!(pose_part + target_part < best.score)) continue;
         ++best.counts.pose_scored;

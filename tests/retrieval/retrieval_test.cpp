@@ -1,5 +1,5 @@
 // Retrieval on the reference database (baked here from data/annotations/reference.json) for all five characters:
-// orders are obeyed, the height of the target shows in the chosen strike, the fast path agrees with the
+// orders are obeyed, the contact is the clip's annotated hit scored by the hit point there, the fast path agrees with the
 // exhaustive reference, and concurrent queries on one retriever give the single-threaded answers.
 
 #include "support/reference_database.h"
@@ -58,8 +58,7 @@ TEST_CASE("retrieval: orders are obeyed for every character", "[retrieval][corpu
                 CHECK(left_part(clip.segment) == (side == Side::left)); // a left punch never returns a right hand
             }
             CHECK(result.start_frame + retriever.settings().min_lead_frames <= clip.hit_frame);
-            CHECK(result.contact_frame >= result.start_frame);
-            CHECK(result.contact_frame <= clip.hit_frame);
+            CHECK(result.contact_frame == clip.hit_frame); // the strike lands at its own annotated hit
             CHECK(result.time_to_contact_s >= 0.0);
         }
         RetrievalQuery unknown = standing.query;
@@ -69,11 +68,14 @@ TEST_CASE("retrieval: orders are obeyed for every character", "[retrieval][corpu
     }
 }
 
-TEST_CASE("retrieval: a high target picks a strike that passes high, a low one a low strike", "[retrieval][corpus]") {
+TEST_CASE("retrieval: the contact is the clip's annotated hit, scored by where its hit point is then", "[retrieval][corpus]") {
     const MotionDatabaseContent* content = reference_database();
     if (!content) return;
     const MotionDatabaseView db = content->view();
     const Retriever retriever(db);
+    RetrievalSettings target_only = retriever.settings();
+    target_only.pose_weight = 0.0;
+    const Retriever by_target(db, target_only);
     RetrievalWorkspace workspace = retriever.make_workspace();
     for (const char* name : k_characters) {
         Standing standing(name, db);
@@ -89,9 +91,19 @@ TEST_CASE("retrieval: a high target picks a strike that passes high, a low one a
                       << low.contact_point_world.transpose());
             REQUIRE(high.found);
             REQUIRE(low.found);
-            CHECK(high.contact_point_world.y() > low.contact_point_world.y() + 0.05);
-            CHECK(std::abs(high.contact_point_world.y() - high_y) < std::abs(low.contact_point_world.y() - high_y));
+            // The target term is the distance from the target to the hit point at the hit frame.
+            CHECK(high.contact_frame == db.clips[high.clip].hit_frame);
+            CHECK(high.d_target_m == Approx((high.contact_point_world - Eigen::Vector3d(0.0, high_y, 0.6)).norm()).margin(1e-6));
+            CHECK(low.d_target_m == Approx((low.contact_point_world - Eigen::Vector3d(0.0, low_y, 0.6)).norm()).margin(1e-6));
+            CHECK(high.contact_point_world.y() >= low.contact_point_world.y() - 1e-9);
+            CHECK(std::abs(high.contact_point_world.y() - high_y) <= std::abs(low.contact_point_world.y() - high_y) + 1e-9);
             CHECK(high.contact_point_world.z() > 0.2); // in front
+            // Scored on the target alone, no start of the order has its hit point nearer the target.
+            query.target_world = Eigen::Vector3d(0.0, high_y, 0.6);
+            const RetrievalResult nearest = by_target.query_exhaustive(query);
+            REQUIRE(nearest.found);
+            CHECK(nearest.d_target_m <= high.d_target_m + 1e-9);
+            CHECK(by_target.query(query, workspace).d_target_m == Approx(nearest.d_target_m).margin(1e-9));
         }
     }
 }

@@ -6,18 +6,20 @@
 // `min_lead_frames` before its hit frame. Its score is
 //     d = w_pose * d_pose + w_target * d_target / leg_length_character
 // where d_pose is Kovar's distance between the current pose's feature and the candidate's, as an RMS over the
-// feature's points (leg lengths), and d_target the smallest distance in metres between the target and the hit
-// segment's path from `min_lead_frames` after the start to the hit, the path brought onto the character: expressed in the start's heading
-// frame and scaled by size_character / size_actor (the paper's c_r = c * size_actor / size_character, applied to
-// the path instead of the target so that distances are the character's). The contact frame is where that distance
-// is smallest.
+// feature's points (leg lengths), and d_target the distance in metres between the target and the hit segment's
+// point at the clip's annotated hit frame, brought onto the character: expressed in the start's heading frame and
+// scaled by size_character / size_actor (the paper's c_r = c * size_actor / size_character, applied to the point
+// instead of the target so that distances are the character's). The contact frame is the hit frame: the strike
+// arrives in its natural hit posture (the paper's d(t_c) = X - M(t_c) at the annotated t_c), with the clip's own
+// timing from the start to the hit.
 //
 // Search. Clusters are visited nearest centroid first. sqrt of Kovar's distance is a metric (the minimum over
 // isometries of a Euclidean distance), so |d(q, c) - d(m, c)| bounds d(q, m) from below for a member m of the
-// cluster with centroid c; and the distance from the target to the start's hit-path box bounds d_target. A
+// cluster with centroid c; d_target is exact and cheap (one point per start, kept beside it), and the distance from
+// the target to a group's box of those points bounds it for the whole group. A
 // candidate whose bound cannot beat the best so far is skipped before any exact distance is computed, and the
-// search stops when a whole cluster's bound cannot. This is the paper's "nearest cluster, then filter by the
-// hit trajectory's bounding box (target inside, else nearest boxes)" made exact: the fast path returns what the
+// search stops when a whole group's bound cannot. This is the paper's "nearest cluster, then filter by the hit
+// trajectory's bounding box (target inside, else nearest boxes)" made exact: the fast path returns what the
 // exhaustive reference returns, unless two scores tie.
 //
 // Queries do not allocate (each thread brings its RetrievalWorkspace) and may run concurrently on one Retriever.
@@ -43,8 +45,8 @@ enum class RetrievalScaling {
 struct RetrievalSettings {
     double pose_weight = 1.0;
     double target_weight = 1.0;
-    int min_lead_frames = 3; // a start at least this many frames before the hit and the contact (0.1 s at 30 fps)
-    // Orders with at most this many candidate starts are scanned with the box bound alone: below it, computing
+    int min_lead_frames = 3; // a start at least this many frames before the hit, which is the contact (0.1 s at 30 fps)
+    // Orders with at most this many candidate starts are scanned without the centroid bound: below it, computing
     // every centroid distance costs more than it saves (measured with tests/bench/retrieval_bench.cpp).
     int scan_below = 600;
     RetrievalScaling scaling = RetrievalScaling::leg_length;
@@ -72,16 +74,16 @@ struct RetrievalQuery {
 struct RetrievalCounts {
     int clusters_visited = 0;   // clusters whose members were looked at
     int candidates_seen = 0;    // members of those clusters that obey the order
-    int inside_box = 0;         // of those, starts whose hit-path box holds the target
+    int inside_box = 0;         // of those, starts whose hit point is within a tenth of a leg (or arm) of the target
     int pose_scored = 0;        // exact pose distances computed
-    int target_scored = 0;      // exact path distances computed
+    int target_scored = 0;      // candidates scored in full
 };
 
 struct RetrievalResult {
     bool found = false;
     int clip = -1;
     int start_frame = 0;
-    int contact_frame = 0;
+    int contact_frame = 0;     // the clip's annotated hit frame
     double time_to_contact_s = 0.0;
     double d_pose = 0.0;       // RMS over the feature's points, leg lengths
     double d_target_m = 0.0;   // character metres
@@ -90,7 +92,7 @@ struct RetrievalResult {
     // Puts the clip, decoded onto the character, on the current pose: a point p of the decoded clip (character
     // metres, the clip's world scaled to the character) goes to clip_to_world.apply(p).
     FloorAlignment clip_to_world;
-    Eigen::Vector3d contact_point_world = Eigen::Vector3d::Zero(); // the scaled, aligned path at the contact frame
+    Eigen::Vector3d contact_point_world = Eigen::Vector3d::Zero(); // the scaled, aligned hit point at the contact frame
     RetrievalCounts counts;
 };
 
@@ -138,8 +140,8 @@ private:
         float heading_cos = 1.0f, heading_sin = 0.0f;
     };
     // A group is the candidate starts of one cluster for one order key (semantics, side, arm or leg strike):
-    // m_candidates[m_group_begin[g] .. m_group_begin[g + 1]), g = cluster * m_order_keys + key, with the union of
-    // their hit-path boxes divided by each actor's scale length.
+    // m_candidates[m_group_begin[g] .. m_group_begin[g + 1]), g = cluster * m_order_keys + key, with the box of
+    // their hit points divided by each actor's scale length.
     int order_key(int semantics, Side side, bool arm) const { return (semantics * 3 + static_cast<int>(side)) * 2 + arm; }
     double character_scale_length(bool arm, const CharacterSize& character) const;
 
@@ -162,11 +164,10 @@ private:
     std::vector<ClipInfo> m_clips;
     std::vector<PoseInfo> m_poses;
     std::vector<float> m_cluster_radius;     // sqrt(radius / points)
-    // A candidate start as the search's inner loop reads it: contiguous per group, its hit-path box divided by
-    // its actor's scale length, its distance to its centroid.
+    // A candidate start as the search's inner loop reads it: contiguous per group, its clip's hit point at the hit
+    // frame in the start's heading frame divided by its actor's scale length, its distance to its centroid.
     struct Candidate {
-        float box_min[3];
-        float box_max[3];
+        float hit_in_start[3];
         float distance_to_centroid;
         std::uint32_t pose;
         std::uint32_t support_foot; // DbPoseFlags bit a leg strike needs planted, 0 for arm strikes
