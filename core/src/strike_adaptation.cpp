@@ -1,6 +1,7 @@
 #include "kumite/core/strike_adaptation.h"
 
 #include "kumite/core/smoothstep.h"
+#include "kumite/core/two_bone_ik.h"
 
 #include <algorithm>
 #include <cmath>
@@ -101,6 +102,79 @@ void StrikeAdapter::begin(const StrikePlan& plan, const MirFrame& current, const
     LimbPins pins = m_pins;
     decode(m_scratch_pose, m_frame, pins);
     m_offset_at_contact = plan.target_world - m_decoder.limb_targets()[m_limb];
+    // The approach: how the driven hit point moves into the target over the last frames before the contact (from
+    // the limb's root when it barely moves there, a strike that arrives at rest).
+    const double before = std::max(0.0, contact_index() - 3.0);
+    frame_mir(before, m_frame);
+    pins = m_pins;
+    pins.extremity_offset_world[m_limb] = constraint_ramp(before, 0.0, contact_index(), m_settings.recovery_frames) * m_offset_at_contact;
+    decode(m_scratch_pose, m_frame, pins);
+    const Eigen::Vector3d arriving = plan.target_world - m_decoder.limb_targets()[m_limb];
+    const Eigen::Vector3d from_root = plan.target_world - m_decoder.model_positions()[m_rig.anatomy().limbs[m_limb].root];
+    m_approach = arriving.norm() > 0.02 ? arriving.normalized() : from_root.normalized();
+    // Where the strike stops: the target, or out of reach the closest point the effector gets to at the contact.
+    m_stop_point = plan.target_world;
+    m_impact = true;
+    const AdaptedFrame at_contact = step(contact_index(), m_scratch_pose);
+    if (at_contact.reach == Reach::unreachable) m_stop_point = at_contact.effector;
+}
+
+bool StrikeAdapter::stop_at_target(LimbPins& pins, double index) const {
+    if (!m_impact || index <= contact_index()) return false;
+    // Past the target along the approach by s: squashed to softness * (1 - exp(-s / softness)), C1 at s = 0.
+    const double past = (m_decoder.limb_targets()[m_limb] - m_stop_point).dot(m_approach);
+    const double softness = m_settings.overshoot_softness_m;
+    if (!(past > 0.0) || softness <= 0.0) return false;
+    pins.extremity_offset_world[m_limb] -= (past - softness * (1.0 - std::exp(-past / softness))) * m_approach;
+    return true;
+}
+
+bool StrikeAdapter::keep_clip_bends(const LimbPins& pins) {
+    if (!m_settings.keep_clip_bends) return false;
+    bool changed = false;
+    const RestAnatomy& anatomy = m_rig.anatomy();
+    const auto positions = m_decoder.model_positions();
+    for (int limb = 0; limb < k_limb_count; ++limb) {
+        const LimbChain& chain = anatomy.limbs[limb];
+        const Eigen::Vector3d& root = positions[chain.root];
+        const Eigen::Vector3d own = root + m_frame.part_frames[chain.parent_part] * m_frame.extremity[limb] * chain.length();
+        Eigen::Vector3d asked = pins.pinned[limb] ? pins.extremity_world[limb] : Eigen::Vector3d(own + pins.extremity_offset_world[limb]);
+        if ((asked - own).norm() < 1e-3 || (asked - root).norm() < 1e-6) continue;
+        // The clip's bend carried to the new line: its component across that line, when it keeps one.
+        Eigen::Vector3d bend = clip_bend(limb);
+        const Eigen::Vector3d axis = (asked - root).normalized();
+        bend -= bend.dot(axis) * axis;
+        if (bend.norm() < 1e-3) continue; // the new line runs along the old bend: any swivel is as far from it
+        const double swivel = limb_swivel(root, root + bend, asked, limb_swivel_reference(m_frame, limb));
+        if (std::abs(std::remainder(swivel - m_frame.swivel[limb], 2.0 * 3.14159265358979)) > 1e-4) {
+            m_frame.swivel[limb] = swivel;
+            changed = true;
+        }
+    }
+    return changed;
+}
+
+Eigen::Vector3d StrikeAdapter::clip_bend(int limb) const {
+    const LimbChain& chain = m_rig.anatomy().limbs[limb];
+    const Eigen::Vector3d& root = m_decoder.model_positions()[chain.root];
+    const Eigen::Vector3d own = root + m_frame.part_frames[chain.parent_part] * m_frame.extremity[limb] * chain.length();
+    const TwoBoneSolution clip = two_bone_ik(root, own, chain.upper_length, chain.lower_length, m_clip_swivels[limb],
+                                             limb_swivel_reference(m_frame, limb));
+    return limb_bend_direction(root, clip.middle, clip.extremity, m_settings.limits.bent_rad);
+}
+
+unsigned StrikeAdapter::violations() const {
+    const RestAnatomy& anatomy = m_rig.anatomy();
+    const auto positions = m_decoder.model_positions();
+    unsigned mask = 0;
+    for (int limb = 0; limb < k_limb_count; ++limb) {
+        const LimbChain& chain = anatomy.limbs[limb];
+        const Eigen::Vector3d bend =
+            limb_bend_direction(positions[chain.root], positions[chain.middle], positions[chain.extremity], m_settings.limits.bent_rad);
+        if (limb_bend_flipped(bend, clip_bend(limb), m_settings.limits)) mask |= 1u << limb;
+    }
+    if (trunk_turn(anatomy, m_decoder.model_rotations()) > m_settings.limits.trunk_turn_rad) mask |= k_trunk_violation;
+    return mask;
 }
 
 int StrikeAdapter::decode(Pose& out, const MirFrame& frame, LimbPins& pins) {
@@ -119,6 +193,21 @@ int StrikeAdapter::decode(Pose& out, const MirFrame& frame, LimbPins& pins) {
     pins.hip_shift_world = shift;
     m_decoder.decode(out, frame, pins);
     return 2;
+}
+
+Eigen::Quaterniond StrikeAdapter::within_trunk_limit(const Eigen::Quaterniond& turn) const {
+    // The chest turns with `turn`, the pelvis stays: keep the largest part of the turn that leaves the chest within
+    // the trunk's limit from the pelvis (bisection; none of it when the clip's own trunk is already beyond).
+    const Eigen::Quaterniond& pelvis = m_frame.part_frames[int(BodyPart::pelvis)];
+    const Eigen::Quaterniond& chest = m_frame.part_frames[int(BodyPart::chest)];
+    const double limit = m_settings.limits.trunk_turn_rad;
+    if (pelvis.angularDistance(turn * chest) <= limit) return turn;
+    double inside = 0.0, outside = 1.0;
+    for (int iteration = 0; iteration < 10; ++iteration) {
+        const double middle = 0.5 * (inside + outside);
+        (pelvis.angularDistance(Eigen::Quaterniond::Identity().slerp(middle, turn) * chest) <= limit ? inside : outside) = middle;
+    }
+    return Eigen::Quaterniond::Identity().slerp(inside, turn);
 }
 
 Eigen::Vector3d StrikeAdapter::pivot_point(TrunkPivot pivot) const {
@@ -152,14 +241,29 @@ AdaptedFrame StrikeAdapter::step(double index, Pose& out) {
     AdaptedFrame result;
     result.contact = index == static_cast<double>(contact_index());
     frame_mir(index, m_frame);
+    m_clip_swivels = m_frame.swivel;
     result.ramp = constraint_ramp(index, 0.0, contact_index(), m_settings.recovery_frames);
     LimbPins pins = m_pins;
     pins.extremity_offset_world[m_limb] = result.ramp * m_offset_at_contact;
     decode(out, m_frame, pins);
+    const bool stopped = stop_at_target(pins, index);
+    if (keep_clip_bends(pins) || stopped) decode(out, m_frame, pins);
     result.wanted = m_decoder.limb_targets()[m_limb];
     result.effector = m_decoder.model_positions()[m_effector_joint];
-    if ((result.effector - result.wanted).norm() <= m_settings.reach_tolerance_m) return result;
+    if ((result.effector - result.wanted).norm() > m_settings.reach_tolerance_m) {
+        reach_with_trunk(result, pins, out);
+        // The trunk moved the limb's root: carry the bends over to the new line again.
+        if (keep_clip_bends(pins)) {
+            result.ccd_decodes += decode(out, m_frame, pins);
+            result.effector = m_decoder.model_positions()[m_effector_joint];
+        }
+    }
+    if (index > contact_index()) result.past_target_m = std::max(0.0, (result.effector - m_stop_point).dot(m_approach));
+    result.joint_violations = violations();
+    return result;
+}
 
+void StrikeAdapter::reach_with_trunk(AdaptedFrame& result, LimbPins& pins, Pose& out) {
     // Out of the limb's reach: turn the trunk towards the target, pivot by pivot, within the joint limits.
     result.reach = Reach::torso;
     pins.pinned[m_limb] = true;
@@ -178,17 +282,20 @@ AdaptedFrame StrikeAdapter::step(double index, Pose& out) {
             Eigen::Quaterniond total = Eigen::Quaterniond::FromTwoVectors(from, to) * m_pivot_turns[p];
             const double angle = rotation_angle(total), limit = pivot_limit(pivot);
             if (angle > limit) total = Eigen::Quaterniond::Identity().slerp(limit / angle, total);
-            const Eigen::Quaterniond turn = total * m_pivot_turns[p].conjugate();
+            Eigen::Quaterniond turn = total * m_pivot_turns[p].conjugate();
+            if (pivot == TrunkPivot::chest || pivot == TrunkPivot::spine_base) {
+                turn = within_trunk_limit(turn);
+                total = turn * m_pivot_turns[p];
+            }
             m_pivot_turns[p] = total;
             result.pivot_turn_rad[p] = rotation_angle(total);
             mir_frame_turn(m_frame, pivot, turn, centre, anatomy.leg_length, anatomy.ankle_height);
             result.ccd_decodes += decode(out, m_frame, pins);
             result.effector = m_decoder.model_positions()[m_effector_joint];
-            if ((result.effector - result.wanted).norm() <= m_settings.reach_tolerance_m) return result;
+            if ((result.effector - result.wanted).norm() <= m_settings.reach_tolerance_m) return;
         }
     }
     result.reach = Reach::unreachable;
-    return result;
 }
 
 } // namespace kumite

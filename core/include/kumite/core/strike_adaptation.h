@@ -17,9 +17,17 @@
 //  5. the support feet — planted both in the current motion and in the clip's start — stay pinned where they
 //     were when the strike began, for the whole strike; a kick's kicking foot is free. When the clip's hips rise
 //     beyond what a pinned leg reaches, the hips are lowered towards the foot instead of lifting it.
+//  6. impact: after the contact the hit point may not go past the target (out of reach: the closest point it got
+//     to at the contact) along the strike's approach direction by more than a soft margin (overshoot_softness_m, approached smoothly), so a strike that lands stops at the
+//     target and then recovers along the clip's own retraction, offset-corrected. set_impact(false) lets the
+//     strike follow through instead (the user dodged: a visible miss).
+//  7. plausible joints (joint_limits.h): a limb whose extremity is moved keeps bending the way the clip bends it
+//     (its elbow or knee bend carried over to the new root->extremity line instead of re-measured from a fixed
+//     reference, which can flip it); every frame reports the joints that still break the limits.
 // Everything is sized by the first begin(); after it, begin() and step() do not allocate.
 
 #include "kumite/core/character_rig.h"
+#include "kumite/core/joint_limits.h"
 #include "kumite/core/mir_edit.h"
 
 namespace kumite {
@@ -41,11 +49,17 @@ struct AdaptationSettings {
     double reach_tolerance_m = 0.001;
     int ccd_iterations = 4;          // sweeps over the pivots (measured: 8 gains nothing, costs twice)
     // Joint limits of the CCD, as the largest turn away from the clip's own pose (radians): 25 deg for the spine
-    // base, 15 deg for the chest, 15 deg for a clavicle, 20 deg for the pelvis (leaning back from a kick).
+    // base, 15 deg for the chest, 15 deg for a clavicle, 30 deg for the pelvis (leaning back from a kick); the chest
+    // never turns further than limits.trunk_turn_rad from the pelvis.
     double spine_base_limit_rad = 25.0 * 3.14159265358979 / 180.0;
     double chest_limit_rad = 15.0 * 3.14159265358979 / 180.0;
     double clavicle_limit_rad = 15.0 * 3.14159265358979 / 180.0;
-    double pelvis_limit_rad = 20.0 * 3.14159265358979 / 180.0;
+    double pelvis_limit_rad = 30.0 * 3.14159265358979 / 180.0;
+    // Impact: how far past the target the hit point may drift after the contact; the excess is squashed smoothly
+    // (C1) so that the overshoot stays below this margin.
+    double overshoot_softness_m = 0.008;
+    bool keep_clip_bends = true; // step 7; off: the decoder's swivels as they are (for comparison)
+    JointLimits limits;
 };
 
 struct StrikePlan {
@@ -66,6 +80,9 @@ struct AdaptedFrame {
     int ccd_decodes = 0;
     std::array<double, 3> pivot_turn_rad{};             // how far the CCD turned each pivot (within its limit)
     bool contact = false;                               // the contact frame
+    double past_target_m = 0.0;   // after the contact: how far the effector is past the target (out of reach: the
+                                  // closest point reached at the contact) along the approach
+    unsigned joint_violations = 0; // joint_limits.h mask
 };
 
 class StrikeAdapter {
@@ -79,6 +96,13 @@ public:
     const StrikePlan& plan() const { return m_plan; }
     AdaptationSettings& settings() { return m_settings; }
     bool arm_strike() const { return m_arm; }
+    // Step 6 on (the default at begin()) or off; the fighter turns it off when the user is no longer at the target.
+    void set_impact(bool impact) { m_impact = impact; }
+    bool impact() const { return m_impact; }
+    // The unit direction in which the hit point arrives at the target (world), and where it stops: the target, or
+    // out of reach the closest point it gets to at the contact. Found at begin().
+    const Eigen::Vector3d& approach_direction() const { return m_approach; }
+    const Eigen::Vector3d& stop_point() const { return m_stop_point; }
 
     int frame_count() const { return m_frame_count; }   // start .. the clip's last frame
     int contact_index() const { return m_plan.contact_frame - m_plan.start_frame; }
@@ -100,7 +124,19 @@ private:
     // Decodes; when a pinned support foot is out of its leg's reach, moves the hips towards it just enough and
     // decodes again (so the foot stays down rather than being dragged up). Returns the decodes made.
     int decode(Pose& out, const MirFrame& frame, LimbPins& pins);
+    // Step 6 on the decoded frame: the offset that keeps the hit point from passing the target. Step 7: the
+    // swivels that keep the clip's bends for the limbs whose extremity is moved. Each returns whether it changed
+    // anything (then the frame is decoded again).
+    bool stop_at_target(LimbPins& pins, double index) const;
+    bool keep_clip_bends(const LimbPins& pins);
+    // Where limb `limb`'s middle joint bulges in the clip's own frame, from the decoded root (zero if straight).
+    Eigen::Vector3d clip_bend(int limb) const;
+    unsigned violations() const;
+    // Step 4: the trunk's CCD when the limb alone falls short of result.wanted.
+    void reach_with_trunk(AdaptedFrame& result, LimbPins& pins, Pose& out);
     Eigen::Vector3d pivot_point(TrunkPivot pivot) const;
+    // The part of a chest or spine-base turn that keeps the trunk within limits.trunk_turn_rad.
+    Eigen::Quaterniond within_trunk_limit(const Eigen::Quaterniond& turn) const;
     double pivot_limit(TrunkPivot pivot) const;
 
     const CharacterRig& m_rig;
@@ -122,6 +158,10 @@ private:
     std::array<Eigen::Vector3d, 2> m_support_pins;
     LimbPins m_pins;
     Eigen::Vector3d m_offset_at_contact = Eigen::Vector3d::Zero(); // d(tc)
+    Eigen::Vector3d m_approach = Eigen::Vector3d::UnitZ();
+    Eigen::Vector3d m_stop_point = Eigen::Vector3d::Zero(); // the target, or the closest point reached at the contact
+    bool m_impact = true;
+    std::array<double, k_limb_count> m_clip_swivels{}; // the frame's swivels before step 7 changed them
     std::array<TrunkPivot, 3> m_pivots{};
     int m_pivot_count = 0;
     std::array<Eigen::Quaterniond, 3> m_pivot_turns;
