@@ -23,15 +23,18 @@ const CommandSpec& adapt_spec() {
         "DB.kdb --character NAME --target X,Y,Z --command punch|kick [--side left|right|any] --record OUT.bvh --report OUT.json",
         "Plays the strike the retrieval picks for a character standing at the origin (facing +Z, in the guard):\n"
         "a short guard hold, then the clip blended in, decoded onto the character, its hit segment driven onto\n"
-        "the target by the constraint ramp (limb IK, then CCD over the trunk when out of reach), support feet\n"
-        "planted. Writes the motion as BVH on the character's skeleton and a JSON report.",
+        "the target at the clip's annotated hit frame by the constraint ramp (limb IK, then CCD over the trunk when\n"
+        "out of reach), stopped at the target after the contact (impact) and recovered along the clip's own\n"
+        "retraction, elbows and knees bending as the clip bends them, support feet planted. Writes the motion as\n"
+        "BVH on the character's skeleton and a JSON report.",
         1, 1,
         {{"character", "NAME", "a character of data/characters (see kumite characters)"},
          {"target", "X,Y,Z", "the target, world metres"},
          {"command", "SEMANTICS", "punch, kick, or any strike semantics the database holds"},
          {"side", "left|right|any", "which side strikes (default any)"},
          {"record", "OUT.bvh", "the adapted motion"},
-         {"report", "OUT.json", "contact error, bone-length error, foot drift, support foot, per-frame cost"},
+         {"report", "OUT.json", "contact error, hit frame, overshoot, speed at contact, joint-limit violations, bone-length error,\n"
+                                "foot drift, support foot, per-frame cost"},
          {"lead", "FRAMES", "guard frames before the strike (default 6)"},
          characters_dir_flag(), json_flag()}};
     return spec;
@@ -100,13 +103,18 @@ int run_adapt(int argc, char** argv) {
     Pose pose;
     AdaptedFrame at_contact;
     std::vector<Reach> reaches;
-    double bone_error = 0.0, drift = 0.0, lift = 0.0;
+    double bone_error = 0.0, drift = 0.0, lift = 0.0, overshoot = 0.0;
+    int violations = 0;
+    Eigen::Vector3d before_contact = Eigen::Vector3d::Zero();
     adapter.step(0, pose); // sizes the pose
     for (int i = 0; i < adapter.frame_count(); ++i) {
         const auto started = std::chrono::steady_clock::now();
         const AdaptedFrame frame = adapter.step(i, pose);
         costs.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started).count());
         if (frame.contact) at_contact = frame;
+        if (i + 1 == adapter.contact_index()) before_contact = frame.effector;
+        overshoot = std::max(overshoot, frame.past_target_m);
+        violations += joint_violation_count(frame.joint_violations);
         reaches.push_back(frame.reach);
         bone_error = std::max(bone_error, bone_length_error(skeleton, adapter.positions()));
         for (int foot = 0; foot < 2; ++foot) {
@@ -119,6 +127,7 @@ int run_adapt(int argc, char** argv) {
         append(pose);
     }
     const double contact_error = (at_contact.effector - *target).norm();
+    const double speed_at_contact = adapter.contact_index() > 0 ? (at_contact.effector - before_contact).norm() / db.meta.frame_time_s : 0.0;
     const bool support_lifted = lift > 0.02;
 
     const Result<void> written = bvh_write_file(*record, output, setup.character.layout, setup.character.unit);
@@ -130,6 +139,11 @@ int run_adapt(int argc, char** argv) {
         {"effector_at_contact", json_vec3(at_contact.effector)},
         {"target", json_vec3(*target)},
         {"contact_error_m", contact_error},
+        {"hit_frame", *lead + (db.clips[retrieved.clip].hit_frame - retrieved.start_frame)},
+        {"overshoot_m", overshoot},
+        {"effector_speed_at_contact_mps", speed_at_contact},
+        {"approach_direction", json_vec3(adapter.approach_direction())},
+        {"joint_limit_violations", violations},
         {"reachable", at_contact.reach != Reach::unreachable},
         {"reach", reach_name(at_contact.reach)},
         {"bone_length_error_m", bone_error},
@@ -151,7 +165,7 @@ int run_adapt(int argc, char** argv) {
     } else {
         std::cout << "wrote " << *record << ": " << output.frame_count() << " frames, " << db.string(clip.name) << " from frame "
                   << retrieved.start_frame << "; contact at frame " << report["contact_frame"] << " (" << reach_name(at_contact.reach)
-                  << "), error " << contact_error << " m, foot drift " << drift << " m, " << report["frame_cost_us"]["median"]
+                   << "), error " << contact_error << " m, overshoot " << overshoot << " m, " << violations << " joint-limit violations, foot drift " << drift << " m, " << report["frame_cost_us"]["median"]
                   << " us/frame\n";
     }
     return k_exit_ok;

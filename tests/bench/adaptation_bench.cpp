@@ -1,13 +1,17 @@
 // Adaptation accuracy and per-frame cost: for each character standing in the guard at the origin, random targets
 // inside its strike envelope (in front, between hip and head height, within arm reach of a shoulder — punches —
 // or leg reach of a hip — kicks — plus `--lean` metres for one step of torso lean), each retrieved and adapted
-// frame by frame. Reports, per strike semantics and overall: contact error (rate within 1 cm), support feet
-// lifted, foot drift, bone-length error; the per-frame cost of step() by regime (limb only / limb + trunk CCD /
+// frame by frame, and a quarter as many targets 0.2-0.6 m out of reach ("far_punch", "far_kick"). Reports, per
+// strike semantics and overall (targets in reach): contact error (rate within 1 cm), overshoot past the target after
+// the contact (past the closest point reached, out of reach), the effector's speed arriving at the contact,
+// joint-limit violations (core/joint_limits.h; with --no-keep-bends, the decoder's own swivels, for comparison),
+// support feet lifted, foot drift, bone-length error; the per-frame cost of step() by regime (limb only / limb + trunk CCD /
 // unreachable), measured in the same run as a baseline (a plain decode of the same frames, no adaptation); and
 // heap allocations inside step() (must be 0); and the pop each blend mode leaves: the largest joint
 // acceleration over the blend-in (from the guard, standing still), ramp against inertialization. One thread.
 //
-// usage: adaptation_bench DB.kdb [--targets N] [--seed S] [--lean M] [--characters-dir DIR]. Prints one JSON document.
+// usage: adaptation_bench DB.kdb [--targets N] [--seed S] [--lean M] [--characters-dir DIR] [--no-keep-bends].
+// Prints one JSON document.
 
 #include "kumite/core/character_rig.h"
 #include "kumite/core/forward_kinematics.h"
@@ -34,13 +38,22 @@ nlohmann::json summary(std::vector<double> values) {
     if (values.empty()) return {{"count", 0}};
     std::sort(values.begin(), values.end());
     auto at = [&](double q) { return values[std::min(values.size() - 1, static_cast<std::size_t>(q * values.size()))]; };
-    return {{"count", values.size()}, {"median", at(0.5)}, {"p99", at(0.99)}, {"max", values.back()}};
+    return {{"count", values.size()}, {"median", at(0.5)}, {"p95", at(0.95)}, {"p99", at(0.99)}, {"max", values.back()}};
 }
 
 struct Tally {
-    int strikes = 0, within_1cm = 0, lifted = 0, reached = 0;
-    std::vector<double> contact_errors, drifts;
+    int strikes = 0, within_1cm = 0, lifted = 0, reached = 0, overshoot_within_3cm = 0, violations = 0;
+    std::vector<double> contact_errors, drifts, overshoots, speeds;
     double worst_bone = 0.0;
+    void add(const Tally& other) {
+        strikes += other.strikes, within_1cm += other.within_1cm, lifted += other.lifted, reached += other.reached;
+        overshoot_within_3cm += other.overshoot_within_3cm, violations += other.violations;
+        for (auto [to, from] : {std::pair{&contact_errors, &other.contact_errors}, {&drifts, &other.drifts}, {&overshoots, &other.overshoots},
+                                {&speeds, &other.speeds}}) {
+            to->insert(to->end(), from->begin(), from->end());
+        }
+        worst_bone = std::max(worst_bone, other.worst_bone);
+    }
 };
 
 } // namespace
@@ -50,6 +63,7 @@ int main(int argc, char** argv) {
     int targets = 200;
     std::uint64_t seed = 1;
     double lean = 0.1;
+    bool keep_bends = true;
     std::filesystem::path characters_dir = std::getenv("KUMITE_CHARACTERS_DIR") ? std::getenv("KUMITE_CHARACTERS_DIR") : "data/characters";
     for (int i = 1; i < argc; ++i) {
         const std::string argument = argv[i];
@@ -57,14 +71,15 @@ int main(int argc, char** argv) {
         else if (argument == "--seed" && i + 1 < argc) seed = std::strtoull(argv[++i], nullptr, 10);
         else if (argument == "--lean" && i + 1 < argc) lean = std::atof(argv[++i]);
         else if (argument == "--characters-dir" && i + 1 < argc) characters_dir = argv[++i];
+        else if (argument == "--no-keep-bends") keep_bends = false;
         else if (!argument.starts_with("--") && database_path.empty()) database_path = argument;
         else {
-            std::cerr << "usage: adaptation_bench DB.kdb [--targets N] [--seed S] [--lean M] [--characters-dir DIR]\n";
+            std::cerr << "usage: adaptation_bench DB.kdb [--targets N] [--seed S] [--lean M] [--characters-dir DIR] [--no-keep-bends]\n";
             return 2;
         }
     }
     if (database_path.empty()) {
-        std::cerr << "usage: adaptation_bench DB.kdb [--targets N] [--seed S] [--lean M] [--characters-dir DIR]\n";
+        std::cerr << "usage: adaptation_bench DB.kdb [--targets N] [--seed S] [--lean M] [--characters-dir DIR] [--no-keep-bends]\n";
         return 2;
     }
     Result<MotionDatabase> database = MotionDatabase::open(database_path);
@@ -80,6 +95,7 @@ int main(int argc, char** argv) {
     std::map<std::string, std::vector<double>> cost_by_regime;
     std::map<std::string, std::vector<double>> blend_pop; // per blend mode: largest joint acceleration, m/s^2
     std::vector<double> baseline_decode_us;
+    std::array<int, 5> violations_by_joint{}; // elbow l, elbow r, knee l, knee r, trunk: frames
     long allocations = 0, frames_stepped = 0;
     SplitMix64 random{seed};
     for (const char* name : {"kid", "scout", "brawler", "runner", "giant"}) {
@@ -105,21 +121,29 @@ int main(int argc, char** argv) {
         MirFrame current;
         encoder.encode(current, standing.view());
         MirDecoder plain_decoder(skeleton, *anatomy, {});
-        StrikeAdapter adapter(rig, db);
+        AdaptationSettings settings;
+        settings.keep_clip_bends = keep_bends;
+        StrikeAdapter adapter(rig, db, settings);
         Pose pose;
         rig.decode(pose, db, 0); // sizes the reused pose: the measured steps must not
         MirFrame plain_frame;
         db_mir_frame_load(plain_frame, db.mir_frames[0]);
 
-        for (int t = 0; t < targets; ++t) {
-            const bool kick = t % 2 == 1;
+        // Targets inside the reach, then a quarter as many far out of it (tallied apart: "far_punch", "far_kick").
+        for (int t = 0; t < targets + targets / 4; ++t) {
+            const bool kick = t % 2 == 1, far = t >= targets;
             const int limb = kick ? int(Limb::leg_l) + int(random.next() % 2) : int(Limb::arm_l) + int(random.next() % 2);
             const LimbChain& chain = anatomy->limbs[limb];
-            // A target in front, between hip and head height, within the limb's reach (+ lean) of its root.
+            // A target in front, between hip and head height, within the limb's reach (+ lean) of its root; a far
+            // one 0.2 to 0.6 m beyond that.
             Eigen::Vector3d target;
             for (int attempt = 0; attempt < 1000; ++attempt) {
                 target = Eigen::Vector3d(random.uniform(-0.4, 0.4), random.uniform(hip_y, head_y), random.uniform(0.2, 1.2));
                 if ((target - positions[chain.root]).norm() <= chain.length() + lean && target.z() > positions[chain.root].z() + 0.15) break;
+            }
+            if (far) {
+                const Eigen::Vector3d out = (target - positions[chain.root]).normalized();
+                target = positions[chain.root] + out * (chain.length() + lean + random.uniform(0.2, 0.6));
             }
             RetrievalQuery query;
             query.pose_feature = feature;
@@ -132,10 +156,11 @@ int main(int argc, char** argv) {
             if (!retrieved.found) continue;
             adapter.begin({retrieved.clip, retrieved.start_frame, retrieved.contact_frame, retrieved.clip_to_world, target}, current,
                           {true, true}, ankles);
-            Tally& tally = tallies[kick ? "kick" : "punch"];
+            Tally& tally = tallies[std::string(far ? "far_" : "") + (kick ? "kick" : "punch")];
             ++tally.strikes;
-            double drift = 0.0, lift = 0.0;
+            double drift = 0.0, lift = 0.0, overshoot = 0.0;
             AdaptedFrame at_contact;
+            Eigen::Vector3d before_contact = Eigen::Vector3d::Zero();
             for (int i = 0; i < adapter.frame_count(); ++i) {
                 kumite::test::allocation_count_reset();
                 kumite::test::allocation_counting(true);
@@ -147,6 +172,10 @@ int main(int argc, char** argv) {
                 ++frames_stepped;
                 cost_by_regime[frame.reach == Reach::limb ? "limb_only" : frame.reach == Reach::torso ? "limb_and_trunk" : "unreachable"].push_back(elapsed);
                 if (frame.contact) at_contact = frame;
+                if (i + 1 == adapter.contact_index()) before_contact = frame.effector;
+                overshoot = std::max(overshoot, frame.past_target_m);
+                tally.violations += joint_violation_count(frame.joint_violations);
+                for (int joint = 0; joint < 5; ++joint) violations_by_joint[joint] += (frame.joint_violations >> joint) & 1u;
                 tally.worst_bone = std::max(tally.worst_bone, bone_length_error(skeleton, adapter.positions()));
                 for (int foot = 0; foot < 2; ++foot) {
                     if (!adapter.support_feet()[foot]) continue;
@@ -185,29 +214,35 @@ int main(int argc, char** argv) {
             tally.reached += at_contact.reach != Reach::unreachable;
             tally.lifted += lift > 0.02;
             tally.drifts.push_back(drift);
+            tally.overshoots.push_back(overshoot);
+            tally.overshoot_within_3cm += overshoot <= 0.03;
+            tally.speeds.push_back((at_contact.effector - before_contact).norm() / dt);
         }
     }
-    nlohmann::json report = {{"benchmark", "adaptation"}, {"database", database_path}, {"targets_per_character", targets}, {"lean_m", lean}};
+    nlohmann::json report = {{"benchmark", "adaptation"}, {"database", database_path}, {"targets_per_character", targets}, {"lean_m", lean},
+                             {"keep_clip_bends", keep_bends}};
+    auto tally_json = [](const Tally& tally) {
+        return nlohmann::json{{"strikes", tally.strikes},
+                              {"contact_within_1cm_rate", double(tally.within_1cm) / std::max(1, tally.strikes)},
+                              {"reached_rate", double(tally.reached) / std::max(1, tally.strikes)},
+                              {"overshoot_within_3cm_rate", double(tally.overshoot_within_3cm) / std::max(1, tally.strikes)},
+                              {"support_foot_lifted", tally.lifted},
+                              {"joint_limit_violations", tally.violations},
+                              {"contact_error_m", summary(tally.contact_errors)},
+                              {"overshoot_m", summary(tally.overshoots)},
+                              {"effector_speed_at_contact_mps", summary(tally.speeds)},
+                              {"foot_drift_m", summary(tally.drifts)},
+                              {"bone_length_error_m_max", tally.worst_bone}};
+    };
     Tally all;
     for (const auto& [semantics, tally] : tallies) {
-        report["strikes"][semantics] = {{"strikes", tally.strikes},
-                                        {"contact_within_1cm_rate", double(tally.within_1cm) / std::max(1, tally.strikes)},
-                                        {"reached_rate", double(tally.reached) / std::max(1, tally.strikes)},
-                                        {"support_foot_lifted", tally.lifted},
-                                        {"contact_error_m", summary(tally.contact_errors)},
-                                        {"foot_drift_m", summary(tally.drifts)},
-                                        {"bone_length_error_m_max", tally.worst_bone}};
-        all.strikes += tally.strikes;
-        all.within_1cm += tally.within_1cm;
-        all.lifted += tally.lifted;
-        all.worst_bone = std::max(all.worst_bone, tally.worst_bone);
-        all.drifts.insert(all.drifts.end(), tally.drifts.begin(), tally.drifts.end());
+        report["strikes"][semantics] = tally_json(tally);
+        if (!semantics.starts_with("far_")) all.add(tally);
     }
-    report["overall"] = {{"strikes", all.strikes},
-                         {"contact_within_1cm_rate", double(all.within_1cm) / std::max(1, all.strikes)},
-                         {"support_foot_lifted", all.lifted},
-                         {"foot_drift_m", summary(all.drifts)},
-                         {"bone_length_error_m_max", all.worst_bone}};
+    report["overall"] = tally_json(all);
+    report["overall"]["joint_limit_violation_frames"] = {{"elbow_l", violations_by_joint[0]}, {"elbow_r", violations_by_joint[1]},
+                                                         {"knee_l", violations_by_joint[2]}, {"knee_r", violations_by_joint[3]},
+                                                         {"trunk", violations_by_joint[4]}};
     for (const auto& [regime, costs] : cost_by_regime) report["frame_cost_us"][regime] = summary(costs);
     report["frame_cost_us"]["baseline_plain_decode"] = summary(baseline_decode_us);
     report["allocations_per_frame"] = double(allocations) / std::max(1L, frames_stepped);
