@@ -6,13 +6,12 @@
 #include "commands.h"
 #include "fighter_setup.h"
 
-#include "kumite/core/forward_kinematics.h"
-#include "kumite/core/strike_adaptation.h"
+#include "kumite/runtime/strike_playback.h"
+#include "strike_filmstrip.h"
 #include "kumite/formats/atomic_file.h"
 #include "kumite/formats/bvh_writer.h"
 
 #include <algorithm>
-#include <chrono>
 #include <iostream>
 
 namespace kumite::cli {
@@ -35,6 +34,7 @@ const CommandSpec& adapt_spec() {
          {"record", "OUT.bvh", "the adapted motion"},
          {"report", "OUT.json", "contact error, hit frame, overshoot, speed at contact, joint-limit violations, bone-length error,\n"
                                 "foot drift, support foot, per-frame cost"},
+         {"filmstrip", "OUT.png", "the frames around the contact from the side and the front: target, hit path, contact marked"},
          {"lead", "FRAMES", "guard frames before the strike (default 6)"},
          characters_dir_flag(), json_flag()}};
     return spec;
@@ -77,82 +77,40 @@ int run_adapt(int argc, char** argv) {
                            " can start from the guard");
     }
 
-    // Where the character is now: the guard, encoded, with both feet planted.
+    const StrikePlan plan{retrieved.clip, retrieved.start_frame, retrieved.contact_frame, retrieved.clip_to_world, *target};
+    const StrikePlayback playback = strike_playback_run(*setup.rig, db, setup.standing, plan, int(*lead));
     const Skeleton& skeleton = setup.character.clip.skeleton;
-    const RestAnatomy& anatomy = setup.anatomy;
-    MirEncoder encoder(skeleton, anatomy);
-    MirFrame current;
-    encoder.encode(current, setup.standing.view());
-    const std::array<Eigen::Vector3d, 2> ankles = {setup.rig->positions()[anatomy.limbs[int(Limb::leg_l)].extremity],
-                                                   setup.rig->positions()[anatomy.limbs[int(Limb::leg_r)].extremity]};
+    const bool support_lifted = playback.support_foot_lift_m > 0.02;
 
-    StrikeAdapter adapter(*setup.rig, db);
-    StrikePlan plan{retrieved.clip, retrieved.start_frame, retrieved.contact_frame, retrieved.clip_to_world, *target};
-    adapter.begin(plan, current, {true, true}, ankles);
-
-    Clip output;
-    output.skeleton = skeleton;
-    output.frame_time_s = db.meta.frame_time_s;
-    auto append = [&](const Pose& pose) {
-        output.root_translations.push_back(pose.root_translation);
-        output.local_rotations.insert(output.local_rotations.end(), pose.local_rotations.begin(), pose.local_rotations.end());
-    };
-    for (int i = 0; i < *lead; ++i) append(setup.standing);
-
-    std::vector<double> costs;
-    Pose pose;
-    AdaptedFrame at_contact;
-    std::vector<Reach> reaches;
-    double bone_error = 0.0, drift = 0.0, lift = 0.0, overshoot = 0.0;
-    int violations = 0;
-    Eigen::Vector3d before_contact = Eigen::Vector3d::Zero();
-    adapter.step(0, pose); // sizes the pose
-    for (int i = 0; i < adapter.frame_count(); ++i) {
-        const auto started = std::chrono::steady_clock::now();
-        const AdaptedFrame frame = adapter.step(i, pose);
-        costs.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started).count());
-        if (frame.contact) at_contact = frame;
-        if (i + 1 == adapter.contact_index()) before_contact = frame.effector;
-        overshoot = std::max(overshoot, frame.past_target_m);
-        violations += joint_violation_count(frame.joint_violations);
-        reaches.push_back(frame.reach);
-        bone_error = std::max(bone_error, bone_length_error(skeleton, adapter.positions()));
-        for (int foot = 0; foot < 2; ++foot) {
-            if (!adapter.support_feet()[foot]) continue;
-            const Eigen::Vector3d ankle = adapter.positions()[anatomy.limbs[2 + foot].extremity];
-            const Eigen::Vector3d pin = adapter.support_pins()[foot];
-            drift = std::max(drift, Eigen::Vector2d(ankle.x() - pin.x(), ankle.z() - pin.z()).norm());
-            lift = std::max(lift, ankle.y() - pin.y());
-        }
-        append(pose);
-    }
-    const double contact_error = (at_contact.effector - *target).norm();
-    const double speed_at_contact = adapter.contact_index() > 0 ? (at_contact.effector - before_contact).norm() / db.meta.frame_time_s : 0.0;
-    const bool support_lifted = lift > 0.02;
-
-    const Result<void> written = bvh_write_file(*record, output, setup.character.layout, setup.character.unit);
+    const Result<void> written = bvh_write_file(*record, playback.motion, setup.character.layout, setup.character.unit);
     if (!written) return input_error(written.error().message);
     const DbClip& clip = db.clips[retrieved.clip];
+    if (const std::optional<std::string> filmstrip = arguments.value("filmstrip")) {
+        const QString title = QString::fromStdString(std::string(db.string(clip.name)) + " on " + *arguments.value("character") + ", " +
+                                                     *arguments.value("command") + " at " + *target_text);
+        const Result<void> drawn = view::strike_filmstrip_save(playback, title, *filmstrip);
+        if (!drawn) return input_error(drawn.error().message);
+    }
     nlohmann::json report = {
-        {"effector", skeleton.names[adapter.effector_joint()]},
-        {"contact_frame", *lead + adapter.contact_index()},
-        {"effector_at_contact", json_vec3(at_contact.effector)},
+        {"effector", skeleton.names[playback.effector_joint]},
+        {"contact_frame", playback.contact_frame},
+        {"effector_at_contact", json_vec3(playback.effector_at_contact)},
         {"target", json_vec3(*target)},
-        {"contact_error_m", contact_error},
-        {"hit_frame", *lead + (db.clips[retrieved.clip].hit_frame - retrieved.start_frame)},
-        {"overshoot_m", overshoot},
-        {"effector_speed_at_contact_mps", speed_at_contact},
-        {"approach_direction", json_vec3(adapter.approach_direction())},
-        {"joint_limit_violations", violations},
-        {"reachable", at_contact.reach != Reach::unreachable},
-        {"reach", reach_name(at_contact.reach)},
-        {"bone_length_error_m", bone_error},
-        {"foot_drift_m", drift},
+        {"contact_error_m", playback.contact_error_m},
+        {"hit_frame", playback.hit_frame},
+        {"overshoot_m", playback.overshoot_m},
+        {"effector_speed_at_contact_mps", playback.effector_speed_at_contact_mps},
+        {"approach_direction", json_vec3(playback.approach_direction)},
+        {"joint_limit_violations", playback.joint_limit_violations},
+        {"reachable", playback.reach_at_contact != Reach::unreachable},
+        {"reach", reach_name(playback.reach_at_contact)},
+        {"bone_length_error_m", playback.bone_length_error_m},
+        {"foot_drift_m", playback.foot_drift_m},
         {"support_foot_lifted", support_lifted},
-        {"support_foot_lift_m", lift},
-        {"support_feet", {{"left", adapter.support_feet()[0]}, {"right", adapter.support_feet()[1]}}},
-        {"frame_cost_us", cost_json(costs)},
-        {"frames", output.frame_count()},
+        {"support_foot_lift_m", playback.support_foot_lift_m},
+        {"support_feet", {{"left", playback.support_feet[0]}, {"right", playback.support_feet[1]}}},
+        {"frame_cost_us", cost_json(playback.frame_cost_us)},
+        {"frames", playback.motion.frame_count()},
         {"clip", db.string(clip.name)},
         {"start_frame", retrieved.start_frame},
         {"retrieval_contact_frame", retrieved.contact_frame},
@@ -163,10 +121,11 @@ int run_adapt(int argc, char** argv) {
     if (arguments.has("json")) {
         print_json(report);
     } else {
-        std::cout << "wrote " << *record << ": " << output.frame_count() << " frames, " << db.string(clip.name) << " from frame "
-                  << retrieved.start_frame << "; contact at frame " << report["contact_frame"] << " (" << reach_name(at_contact.reach)
-                   << "), error " << contact_error << " m, overshoot " << overshoot << " m, " << violations << " joint-limit violations, foot drift " << drift << " m, " << report["frame_cost_us"]["median"]
-                  << " us/frame\n";
+        std::cout << "wrote " << *record << ": " << playback.motion.frame_count() << " frames, " << db.string(clip.name) << " from frame "
+                  << retrieved.start_frame << "; contact at frame " << playback.contact_frame << " (" << reach_name(playback.reach_at_contact)
+                  << "), error " << playback.contact_error_m << " m, overshoot " << playback.overshoot_m << " m, "
+                  << playback.joint_limit_violations << " joint-limit violations, foot drift " << playback.foot_drift_m << " m, "
+                  << report["frame_cost_us"]["median"] << " us/frame\n";
     }
     return k_exit_ok;
 }
