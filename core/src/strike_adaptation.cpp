@@ -102,21 +102,22 @@ void StrikeAdapter::begin(const StrikePlan& plan, const MirFrame& current, const
     LimbPins pins = m_pins;
     decode(m_scratch_pose, m_frame, pins);
     m_offset_at_contact = plan.target_world - m_decoder.limb_targets()[m_limb];
-    // The approach: how the driven hit point moves into the target over the last frames before the contact (from
-    // the limb's root when it barely moves there, a strike that arrives at rest).
-    const double before = std::max(0.0, contact_index() - 3.0);
-    frame_mir(before, m_frame);
-    pins = m_pins;
-    pins.extremity_offset_world[m_limb] = constraint_ramp(before, 0.0, contact_index(), m_settings.recovery_frames) * m_offset_at_contact;
-    decode(m_scratch_pose, m_frame, pins);
-    const Eigen::Vector3d arriving = plan.target_world - m_decoder.limb_targets()[m_limb];
-    const Eigen::Vector3d from_root = plan.target_world - m_decoder.model_positions()[m_rig.anatomy().limbs[m_limb].root];
-    m_approach = arriving.norm() > 0.02 ? arriving.normalized() : from_root.normalized();
     // Where the strike stops: the target, or out of reach the closest point the effector gets to at the contact.
     m_stop_point = plan.target_world;
     m_impact = true;
     const AdaptedFrame at_contact = step(contact_index(), m_scratch_pose);
     if (at_contact.reach == Reach::unreachable) m_stop_point = at_contact.effector;
+    // The approach: the way the effector itself travels into the stop point, over the last frame before the
+    // contact (two when it barely moves; from the limb's root when it arrives at rest). A chord from further back
+    // would miss the last turn of a sweeping kick, which then slides on through the target.
+    m_approach = (m_stop_point - m_decoder.model_positions()[m_rig.anatomy().limbs[m_limb].root]).normalized();
+    for (int back = 1; back <= 2 && contact_index() - back >= 0; ++back) {
+        const Eigen::Vector3d arriving = at_contact.effector - step(contact_index() - back, m_scratch_pose).effector;
+        if (arriving.norm() > 0.01) {
+            m_approach = arriving.normalized();
+            break;
+        }
+    }
 }
 
 bool StrikeAdapter::stop_at_target(LimbPins& pins, double index) const {
@@ -270,7 +271,9 @@ void StrikeAdapter::reach_with_trunk(AdaptedFrame& result, LimbPins& pins, Pose&
     pins.extremity_world[m_limb] = result.wanted;
     m_pivot_turns.fill(Eigen::Quaterniond::Identity());
     const RestAnatomy& anatomy = m_rig.anatomy();
+    double gap = (result.effector - result.wanted).norm();
     for (int sweep = 0; sweep < m_settings.ccd_iterations; ++sweep) {
+        bool turned = false;
         for (int p = 0; p < m_pivot_count; ++p) {
             const TrunkPivot pivot = m_pivots[p];
             // Out of reach the limb points straight at the target from its root, so what the trunk must do is
@@ -289,11 +292,18 @@ void StrikeAdapter::reach_with_trunk(AdaptedFrame& result, LimbPins& pins, Pose&
             }
             m_pivot_turns[p] = total;
             result.pivot_turn_rad[p] = rotation_angle(total);
+            if (rotation_angle(turn) < 1e-5) continue; // held at its limit: the pose is unchanged, no decode
+            turned = true;
             mir_frame_turn(m_frame, pivot, turn, centre, anatomy.leg_length, anatomy.ankle_height);
             result.ccd_decodes += decode(out, m_frame, pins);
             result.effector = m_decoder.model_positions()[m_effector_joint];
             if ((result.effector - result.wanted).norm() <= m_settings.reach_tolerance_m) return;
         }
+        // Every pivot at its limit, or a sweep that gained less than a millimetre (the limits bind): further
+        // sweeps would change next to nothing.
+        const double now = (result.effector - result.wanted).norm();
+        if (!turned || gap - now < 1e-3) break;
+        gap = now;
     }
     result.reach = Reach::unreachable;
 }
