@@ -49,7 +49,7 @@ const CommandSpec& play_spec() {
          {"lead", "S", "the least time from an order's strike start to its contact (default 0.4 s)"},
          {"record", "OUT.bvh", "the first fighter's motion on the starting character"},
          {"events", "OUT.jsonl", "one JSON object per event"},
-         {"report", "OUT.json", "frames, frame times, orders, strikes, hits, misses, tracker counts"},
+         {"report", "OUT.json", "frames, frame times, orders, strikes, hits, misses, impacts, overshoot, joint-limit violations, tracker counts"},
          characters_dir_flag(), json_flag()}};
     return spec;
 }
@@ -62,6 +62,14 @@ nlohmann::json summary_of(std::vector<double> values) {
     double sum = 0.0;
     for (double v : values) sum += v;
     return {{"mean", sum / values.size()}, {"p99", values[std::min(values.size() - 1, values.size() * 99 / 100)]}, {"max", values.back()}};
+}
+
+// Median, p95 and max (the strike figures of issue 13's reports).
+nlohmann::json quantiles_of(std::vector<double> values) {
+    if (values.empty()) return {{"median", 0.0}, {"p95", 0.0}, {"max", 0.0}, {"count", 0}};
+    std::sort(values.begin(), values.end());
+    auto at = [&](double q) { return values[std::min(values.size() - 1, std::size_t(q * double(values.size())))]; };
+    return {{"median", at(0.5)}, {"p95", at(0.95)}, {"max", values.back()}, {"count", values.size()}};
 }
 
 const char* side_text(Side side) { return side == Side::left ? "left" : side == Side::right ? "right" : "any"; }
@@ -91,6 +99,14 @@ nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
         line["head_distance_m"] = event.head_distance_m;
         line["range_m"] = event.range_m;
         line["clip"] = bout.database().string(bout.database().clips[event.clip].name);
+        line["effector_speed_at_contact_mps"] = event.effector_speed_mps;
+        line["outcome"] = event.impact ? "impact" : "follow_through";
+        break;
+    case FighterEvent::Type::strike_end:
+        line["clip"] = bout.database().string(bout.database().clips[event.clip].name);
+        line["outcome"] = event.impact ? "impact" : "follow_through";
+        line["overshoot_m"] = event.overshoot_m;
+        line["joint_limit_violations"] = event.joint_limit_violations;
         break;
     case FighterEvent::Type::character: line["character"] = bout.character_name(event.character); break;
     default: break;
@@ -116,7 +132,12 @@ nlohmann::json play_report_json(const Bout& bout) {
             {"ignored_orders", counters.ignored_orders},
             {"tracker_packets", bout.tracker().packets()},
             {"tracker_rejected", bout.tracker().rejected()},
-            {"command_to_strike_frames", {{"max", max_latency}, {"mean", mean_latency}}}};
+            {"command_to_strike_frames", {{"max", max_latency}, {"mean", mean_latency}}},
+            {"impacts", counters.impacts},
+            {"follow_throughs", counters.follow_throughs},
+            {"overshoot_m", quantiles_of(counters.impact_overshoot_m)},
+            {"effector_speed_at_contact_mps", quantiles_of(counters.contact_speed_mps)},
+            {"joint_limit_violations", counters.joint_limit_violations}};
 }
 
 int run_play(int argc, char** argv) {

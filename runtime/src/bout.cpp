@@ -51,6 +51,8 @@ Result<std::unique_ptr<Bout>> Bout::create(const MotionDatabaseView& database, s
     bout->m_queued.reserve(16);
     bout->m_counters.frame_us.reserve(1 << 16);
     bout->m_counters.command_to_strike_frames.reserve(1024);
+    bout->m_counters.impact_overshoot_m.reserve(1024);
+    bout->m_counters.contact_speed_mps.reserve(1024);
     if (options.record) {
         const Character& start = *bout->m_characters[options.start_character];
         bout->m_record_decoder = std::make_unique<MirDecoder>(start.file.clip.skeleton, start.anatomy, std::span<const std::string>{});
@@ -150,6 +152,12 @@ void Bout::step(double t_s) {
                 (event.hit ? m_counters.hits : m_counters.misses) += 1;
                 m_counters.last_contact_error_m = event.contact_error_m;
                 m_counters.last_hit = event.hit;
+                m_counters.contact_speed_mps.push_back(event.effector_speed_mps);
+                break;
+            case FighterEvent::Type::strike_end:
+                (event.impact ? m_counters.impacts : m_counters.follow_throughs) += 1;
+                if (event.impact) m_counters.impact_overshoot_m.push_back(event.overshoot_m);
+                m_counters.joint_limit_violations += event.joint_limit_violations;
                 break;
             default: break;
             }

@@ -46,6 +46,7 @@ const char* fighter_event_name(FighterEvent::Type type) {
     case FighterEvent::Type::ignored_order: return "ignored_order";
     case FighterEvent::Type::state: return "state";
     case FighterEvent::Type::strike: return "strike";
+    case FighterEvent::Type::strike_end: return "strike_end";
     case FighterEvent::Type::tracker_lost: return "tracker_lost";
     case FighterEvent::Type::tracker_back: return "tracker_back";
     case FighterEvent::Type::character: return "character";
@@ -288,6 +289,10 @@ void Fighter::start_strike(double t_s) {
     m_strike_start = m_mir;
     m_strike_start_s = t_s;
     m_contact_done = false;
+    m_strike_overshoot_m = 0.0;
+    m_strike_violations = 0;
+    m_strike_impact = true;
+    m_previous_effector_s = -1.0;
     m_strike_semantics = m_pending_semantics;
     m_strike_side = m_pending_side;
     m_strike_range_m = distance_to_user();
@@ -302,6 +307,7 @@ void Fighter::begin_strike() {
     const RestAnatomy& anatomy = body.rig->anatomy();
     body.adapter.begin(m_plan, m_strike_start, {true, true},
                        {positions[anatomy.limbs[int(Limb::leg_l)].extremity], positions[anatomy.limbs[int(Limb::leg_r)].extremity]});
+    body.adapter.set_impact(m_strike_impact); // a switch after the contact keeps the strike's outcome
 }
 
 void Fighter::play_strike(double t_s) {
@@ -310,10 +316,20 @@ void Fighter::play_strike(double t_s) {
     // Frames of the database's rate, as a fractional index; the contact frame is played exactly.
     double index = (t_s - m_strike_start_s) / m_db.meta.frame_time_s;
     const double contact = adapter.contact_index();
-    if (!m_contact_done && index >= contact - 1e-9) index = contact;
+    // The database's frame time is a float: a frame landing on the contact can come out a few 1e-7 short of it.
+    if (!m_contact_done && index >= contact - 1e-4) index = contact;
     index = std::min(index, double(adapter.frame_count() - 1));
+    // At the contact: a head still at the latched target takes the impact (the strike stops there); a dodged
+    // strike follows through from this frame on.
+    const bool at_contact = !m_contact_done && index >= contact;
+    if (at_contact) {
+        m_strike_impact = m_tracking && (m_head - m_plan.target_world).norm() <= m_settings.hit_radius_m;
+        adapter.set_impact(m_strike_impact);
+    }
     const AdaptedFrame frame = adapter.step(index, m_pose);
-    if (!m_contact_done && index >= contact) {
+    m_strike_overshoot_m = std::max(m_strike_overshoot_m, frame.past_target_m);
+    m_strike_violations += joint_violation_count(frame.joint_violations);
+    if (at_contact) {
         m_contact_done = true;
         FighterEvent event;
         event.type = FighterEvent::Type::strike;
@@ -325,10 +341,26 @@ void Fighter::play_strike(double t_s) {
         event.head_distance_m = m_tracking ? (frame.effector - m_head).norm() : 1e9;
         event.hit = event.head_distance_m <= m_settings.hit_radius_m;
         event.range_m = m_strike_range_m;
+        event.impact = m_strike_impact;
+        if (m_previous_effector_s >= 0.0 && t_s > m_previous_effector_s) {
+            event.effector_speed_mps = (frame.effector - m_previous_effector).norm() / (t_s - m_previous_effector_s);
+        }
         push_event(event);
     }
+    m_previous_effector = frame.effector;
+    m_previous_effector_s = t_s;
     body.encoder.encode(m_mir, m_pose.view());
     if (index >= adapter.frame_count() - 1) {
+        FighterEvent event;
+        event.type = FighterEvent::Type::strike_end;
+        event.t_s = t_s;
+        event.semantics = m_strike_semantics;
+        event.side = m_strike_side;
+        event.clip = m_plan.clip;
+        event.impact = m_strike_impact;
+        event.overshoot_m = m_strike_overshoot_m;
+        event.joint_limit_violations = m_strike_violations;
+        push_event(event);
         enter(FighterState::recover, t_s);
         finish_frame();
         start_clip(m_guard_clip, t_s, false);

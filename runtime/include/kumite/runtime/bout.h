@@ -41,6 +41,10 @@ struct BoutCounters {
     long long orders = 0, strikes = 0, hits = 0, misses = 0, ignored_orders = 0;
     std::vector<double> frame_us;               // every frame's cost (reserve: see Bout)
     std::vector<double> command_to_strike_frames;
+    std::vector<double> impact_overshoot_m;     // per strike that stopped at the target (impact): how far past it
+    std::vector<double> contact_speed_mps;      // per strike: the hit point's speed arriving at the contact
+    long long joint_limit_violations = 0;       // summed over strikes and frames
+    long long impacts = 0, follow_throughs = 0; // strikes that stopped at the target, strikes the user dodged
     double last_contact_error_m = -1.0;         // of the last strike; -1 before any
     bool last_hit = false;
 };

@@ -1,7 +1,8 @@
 #pragma once
 // The fighter (ARCHITECTURE.md step 7): a character that guards, steps to keep the user in striking range while
 // facing them, strikes on order at the head as it was when the order came (the target is latched), and tells a
-// hit from a miss by where the head is at the contact frame. It owns its workspace and steps at a fixed rate; after
+// hit from a miss by where the head is at the contact frame. A strike whose target the head is still at when it
+// lands stops there (impact); one the user has dodged follows through, a visible miss. It owns its workspace and steps at a fixed rate; after
 // construction a step allocates nothing. Several fighters can run side by side, one object each.
 //
 // States: rest (the database's guard clip, looped, re-aimed at the user at each loop) -> approach (one step clip
@@ -39,7 +40,7 @@ struct FighterSettings {
 };
 
 struct FighterEvent {
-    enum class Type { order, ignored_order, state, strike, tracker_lost, tracker_back, character };
+    enum class Type { order, ignored_order, state, strike, strike_end, tracker_lost, tracker_back, character };
     Type type = Type::state;
     double t_s = 0.0;
     FighterState state = FighterState::rest; // state events: the new state
@@ -50,6 +51,11 @@ struct FighterEvent {
     double contact_error_m = 0.0;            // effector to the latched target at contact
     double head_distance_m = 0.0;            // effector to the head at contact
     double range_m = 0.0;                    // strike events: pelvis to head on the floor when the strike began
+    double effector_speed_mps = 0.0;         // strike events: the hit point's speed arriving at the contact
+    bool impact = true;                      // strike and strike_end events: the head was still at the target at
+                                             // the contact, so the strike stops there; false: it follows through
+    double overshoot_m = 0.0;                // strike_end events: the farthest past the target after the contact
+    int joint_limit_violations = 0;          // strike_end events: joints out of limits, summed over the frames
     int character = -1;                      // character events
     const char* why = "";                    // ignored orders
 };
@@ -151,6 +157,11 @@ private:
     int m_strike_semantics = -1;
     Side m_strike_side = Side::none;
     double m_strike_range_m = 0.0;
+    double m_strike_overshoot_m = 0.0;
+    int m_strike_violations = 0;
+    bool m_strike_impact = true;
+    Eigen::Vector3d m_previous_effector = Eigen::Vector3d::Zero();
+    double m_previous_effector_s = 0.0;
     // output
     MirFrame m_clip_frame, m_next_frame, m_mir;
     Pose m_pose;
