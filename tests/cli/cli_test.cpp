@@ -352,8 +352,9 @@ TEST_CASE("cli: adapt writes a BVH on the character and a report with the contra
     const std::string db = baked_golden().string();
     const std::filesystem::path folder = kumite::test::make_temp_dir("cli-adapt");
     const std::string bvh = (folder / "kick.bvh").string(), report = (folder / "kick.json").string();
+    const std::string filmstrip = (folder / "kick.png").string();
     const auto result = run_command(kumite_exe() + " adapt " + db + " --character runner --target -0.1,0.9,0.6 --command kick --side right" +
-                                    " --record " + bvh + " --report " + report);
+                                    " --record " + bvh + " --report " + report + " --filmstrip " + filmstrip);
     INFO(result.err);
     REQUIRE(result.status == 0);
     const nlohmann::json document = nlohmann::json::parse(file_bytes(report));
@@ -367,6 +368,24 @@ TEST_CASE("cli: adapt writes a BVH on the character and a report with the contra
     CHECK(document["support_foot_lifted"] == false);
     CHECK(document["bone_length_error_m"].get<double>() < 1e-4);
     for (const char* key : {"median", "p99", "max"}) CHECK(document["frame_cost_us"].contains(key));
+    // The strike lands at its annotated hit and stops there.
+    for (const char* key : {"hit_frame", "overshoot_m", "effector_speed_at_contact_mps", "joint_limit_violations"}) CHECK(document.contains(key));
+    CHECK(document["hit_frame"] == document["contact_frame"]);
+    CHECK(document["overshoot_m"].get<double>() <= 0.03);
+    CHECK(document["joint_limit_violations"] == 0);
+    // The filmstrip: a PNG with two rows of frames (its IHDR holds width and height, big-endian).
+    const std::string png = file_bytes(filmstrip);
+    REQUIRE(png.size() > 24);
+    CHECK(png.substr(1, 3) == "PNG");
+    auto be32 = [&](std::size_t at) { return (std::uint32_t(std::uint8_t(png[at])) << 24) | (std::uint32_t(std::uint8_t(png[at + 1])) << 16) |
+                                             (std::uint32_t(std::uint8_t(png[at + 2])) << 8) | std::uint32_t(std::uint8_t(png[at + 3])); };
+    CHECK(be32(16) > 1000); // width: several frames side by side
+    CHECK(be32(20) > 400);  // height: side and front rows
+    // A filmstrip that cannot be written fails with status 1 and says where.
+    const auto unwritable = run_command(kumite_exe() + " adapt " + db + " --character runner --target -0.1,0.9,0.6 --command kick --record " + bvh +
+                                        " --filmstrip " + (folder / "missing-folder" / "strip.png").string());
+    CHECK(unwritable.status == 1);
+    CHECK(unwritable.err.find("strip.png") != std::string::npos);
     // The BVH is the runner's skeleton, and its contact frame exists.
     const auto inspect = run_command(kumite_exe() + " inspect " + bvh + " --json");
     REQUIRE(inspect.status == 0);

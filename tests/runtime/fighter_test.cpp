@@ -238,3 +238,29 @@ TEST_CASE("fighter: an order refused while another waits leaves the waiting one 
     CHECK(b.db.string(b.db.clips[strike->clip].semantics) == "kick"); // the first order, not the refused one
     CHECK(strike->side == Side::right);
 }
+
+TEST_CASE("fighter: a strike the head waits for stops at it; one the head leaves follows through", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    if (!content) return;
+    for (const char* semantics : {"kick", "punch"}) {
+        for (const bool dodge : {false, true}) {
+            Bout b(content->view());
+            const Eigen::Vector3d user(0.0, 1.5, 0.9), ducked(0.4, 1.1, 0.9);
+            b.run(0, 240, [&](double) { return std::optional(user); });
+            REQUIRE(b.fighter->order(b.retriever->semantics_id(semantics), Side::right));
+            // The head leaves the latched target 0.1 s after the order (before any contact: the lead is longer).
+            b.run(240, 500, [&](double t) { return std::optional(dodge && t > 4.1 ? ducked : user); });
+            INFO(semantics << (dodge ? " dodged" : " stood still"));
+            const auto strike = std::find_if(b.events.begin(), b.events.end(), [](const FighterEvent& e) { return e.type == FighterEvent::Type::strike; });
+            const auto end = std::find_if(b.events.begin(), b.events.end(), [](const FighterEvent& e) { return e.type == FighterEvent::Type::strike_end; });
+            REQUIRE(strike != b.events.end());
+            REQUIRE(end != b.events.end());
+            CHECK(strike->impact == !dodge);
+            CHECK(end->impact == !dodge);
+            CHECK(strike->hit == !dodge);
+            CHECK(end->joint_limit_violations == 0);
+            if (!dodge) CHECK(end->overshoot_m <= 0.03);
+            CHECK(end->t_s > strike->t_s);
+        }
+    }
+}
