@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
-"""Blender sees the effector at the target: for each character and a punch and a kick at reachable targets,
-`kumite adapt` writes a BVH and a report; Blender's own BVH importer (scripts/blender_bvh_positions.py) gives the
-effector joint's position at the report's contact frame, which must lie within --tolerance metres of the target.
+"""Blender sees the effector at the target and not past it: for each character and a punch and a kick at reachable
+targets, `kumite adapt` writes a BVH and a report; Blender's own BVH importer (scripts/blender_bvh_positions.py) gives
+the effector joint's positions from just before the contact frame to the end. At the report's contact frame the
+effector must lie within --tolerance metres of the target; in no later frame may it be more than --overshoot metres
+past where it stopped, along the way it arrived (its own last frame before the contact, as Blender sees it).
 Exit 77 (skipped) without Blender.
 
 usage: check_adapt_in_blender.py --kumite KUMITE (--database DB.kdb | --annotations A.json --mocap-root DIR)
@@ -25,6 +27,14 @@ CASES = [  # command, side, target (m): in front of each character, between hip 
 ]
 
 
+def norm(v):
+    return sum(x * x for x in v) ** 0.5
+
+
+def distance(a, b):
+    return norm([x - y for x, y in zip(a, b)])
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--kumite", required=True)
@@ -33,6 +43,7 @@ def main():
     parser.add_argument("--mocap-root")
     parser.add_argument("--characters", required=True)
     parser.add_argument("--tolerance", type=float, default=0.01)
+    parser.add_argument("--overshoot", type=float, default=0.03)
     args = parser.parse_args()
     if not shutil.which("blender"):
         print("blender not installed: skipped")
@@ -61,19 +72,34 @@ def main():
                                                     capture_output=True, text=True).stdout)
                 frame = report["contact_frame"]
                 subprocess.run(["blender", "-b", "--factory-startup", "--python", POSITIONS, "--", stem + ".bvh",
-                                stem + ".blender.json", "--frame-list", str(frame)], check=True,
+                                stem + ".blender.json", "--frame-list", f"{max(0, frame - 2)}-{inspect['frames'] - 1}"], check=True,
                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
                 blender = json.load(open(stem + ".blender.json"))
                 joint = blender["joint_names"].index(report["effector"])
                 scale = inspect["unit_scale_m"]
-                seen = [v * scale for v in blender["frames"][str(frame)][joint]]
-                error = sum((a - b) ** 2 for a, b in zip(seen, target)) ** 0.5
+
+                def effector(f):
+                    return [v * scale for v in blender["frames"][str(f)][joint]]
+
+                seen = effector(frame)
+                error = distance(seen, target)
+                approach = report["approach_direction"]
+                for back in (1, 2):
+                    if frame - back >= 0:
+                        arriving = [a - b for a, b in zip(seen, effector(frame - back))]
+                        if norm(arriving) > 0.01:
+                            approach = [v / norm(arriving) for v in arriving]
+                            break
+                past = max([sum((a - b) * u for a, b, u in zip(effector(f), seen, approach))
+                            for f in range(frame + 1, inspect["frames"])] + [0.0])
                 checked += 1
-                status = "ok" if error <= args.tolerance else "FAIL"
+                status = "ok" if error <= args.tolerance and past <= args.overshoot else "FAIL"
                 failures += status == "FAIL"
                 print(f"{character} {command} {side}: {report['effector']} at frame {frame} is {error * 1000:.2f} mm from the target"
-                      f" in Blender (kumite: {report['contact_error_m'] * 1000:.3f} mm) {status}")
-    print(f"{checked} adapted strikes checked in Blender, {failures} beyond {args.tolerance} m")
+                      f" in Blender (kumite: {report['contact_error_m'] * 1000:.3f} mm), at most {past * 1000:.1f} mm past it"
+                      f" afterwards (kumite: {report['overshoot_m'] * 1000:.1f} mm) {status}")
+    print(f"{checked} adapted strikes checked in Blender, {failures} beyond {args.tolerance} m at the contact"
+          f" or {args.overshoot} m past the target after it")
     return 1 if failures or checked == 0 else 0
 
 
