@@ -33,18 +33,6 @@ Result<BvhFile> load_capture(const std::filesystem::path& given_path, const Capt
     return capture_read_file(resolve_capture_path(given_path, options.mocap_root), options.read, options.body_map_file);
 }
 
-std::filesystem::path locate_data_folder(const char* environment_variable, const std::filesystem::path& relative) {
-    if (const char* folder = std::getenv(environment_variable); folder && *folder) return folder;
-    std::error_code error;
-    if (std::filesystem::exists(relative, error)) return relative;
-    const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
-    if (!error) {
-        const std::filesystem::path repository_root = executable.parent_path().parent_path().parent_path();
-        if (std::filesystem::exists(repository_root / relative, error)) return repository_root / relative;
-    }
-    return relative;
-}
-
 std::filesystem::path default_mocap_root() { return locate_data_folder("KUMITE_MOCAP_ROOT", "data/mocap"); }
 
 nlohmann::json json_vec3(const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }

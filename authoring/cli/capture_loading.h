@@ -4,6 +4,7 @@
 
 #include "arguments.h"
 #include "kumite/formats/bvh_reader.h"
+#include "kumite/formats/character_catalog.h"
 
 #include <nlohmann/json.hpp>
 
@@ -26,10 +27,6 @@ std::filesystem::path resolve_capture_path(const std::filesystem::path& path, co
 
 // Reads the capture and applies --body-map, or the sidecar FILE.bodymap.json when there is one.
 Result<BvhFile> load_capture(const std::filesystem::path& path, const CaptureOptions& options);
-
-// A data folder: $ENVIRONMENT_VARIABLE, else `relative` in the working directory, else the repository's found
-// from the executable (build/bin/kumite -> data/...), else `relative` as given.
-std::filesystem::path locate_data_folder(const char* environment_variable, const std::filesystem::path& relative);
 
 // $KUMITE_MOCAP_ROOT, else data/mocap (see locate_data_folder).
 std::filesystem::path default_mocap_root();

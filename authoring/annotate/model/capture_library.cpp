@@ -1,22 +1,15 @@
 #include "capture_library.h"
 
 #include "kumite/formats/capture_file.h"
+#include "kumite/formats/character_catalog.h"
 
-#include <cstdlib>
 
 namespace kumite::annotate {
 
 std::filesystem::path default_mocap_root() {
-    const std::filesystem::path relative = "data/mocap";
-    if (const char* folder = std::getenv("KUMITE_MOCAP_ROOT"); folder && *folder) return folder;
+    const std::filesystem::path folder = locate_data_folder("KUMITE_MOCAP_ROOT", "data/mocap");
     std::error_code error;
-    if (std::filesystem::exists(relative, error)) return std::filesystem::absolute(relative, error);
-    const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
-    if (!error) {
-        const std::filesystem::path repository_root = executable.parent_path().parent_path().parent_path();
-        if (std::filesystem::exists(repository_root / relative, error)) return repository_root / relative;
-    }
-    return relative;
+    return folder.is_relative() && std::filesystem::exists(folder, error) ? std::filesystem::absolute(folder, error) : folder;
 }
 
 std::optional<int> hit_frame_suggest(const LoadedCapture& capture, BodyPart segment, int first_frame, int last_frame) {
