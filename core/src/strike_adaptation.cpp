@@ -9,6 +9,10 @@
 namespace kumite {
 namespace {
 
+double rotation_angle(const Eigen::Quaterniond& q) { return 2.0 * std::acos(std::min(1.0, std::abs(q.w()))); }
+
+} // namespace
+
 int limb_of_segment(BodyPart segment) {
     switch (segment) {
     case BodyPart::clavicle_l: case BodyPart::upper_arm_l: case BodyPart::forearm_l: case BodyPart::hand_l: return int(Limb::arm_l);
@@ -17,10 +21,6 @@ int limb_of_segment(BodyPart segment) {
     default: return int(Limb::leg_r);
     }
 }
-
-double rotation_angle(const Eigen::Quaterniond& q) { return 2.0 * std::acos(std::min(1.0, std::abs(q.w()))); }
-
-} // namespace
 
 double constraint_ramp(double t, double t0, double tc, double recovery) {
     if (t >= tc) return recovery > 0.0 ? 1.0 - smoothstep((t - tc) / recovery) : (t == tc ? 1.0 : 0.0);

@@ -17,12 +17,29 @@ bool project_point(const ViewProjection& vp, const Eigen::Vector3f& world, Eigen
     return true;
 }
 
-int pick_capsule(const Scene& scene, const ViewProjection& vp, Eigen::Vector2f ndc, float slack) {
+void view_ray(const ViewProjection& vp, Eigen::Vector2f ndc, Eigen::Vector3f& origin, Eigen::Vector3f& direction) {
     const Eigen::Matrix4f inverse = (vp.projection * vp.view).inverse();
     const Eigen::Vector4f near_h = inverse * Eigen::Vector4f(ndc.x(), ndc.y(), -1.0f, 1.0f);
     const Eigen::Vector4f far_h = inverse * Eigen::Vector4f(ndc.x(), ndc.y(), 1.0f, 1.0f);
-    const Eigen::Vector3f origin = near_h.head<3>() / near_h.w();
-    const Eigen::Vector3f direction = (far_h.head<3>() / far_h.w() - origin).normalized();
+    origin = near_h.head<3>() / near_h.w();
+    direction = (far_h.head<3>() / far_h.w() - origin).normalized();
+}
+
+bool point_on_facing_plane(const ViewProjection& vp, Eigen::Vector2f ndc, const Eigen::Vector3f& through, Eigen::Vector3f& point) {
+    Eigen::Vector3f origin, direction;
+    view_ray(vp, ndc, origin, direction);
+    const Eigen::Vector3f normal = -vp.view.block<1, 3>(2, 0).transpose(); // where the camera looks
+    const float along = direction.dot(normal);
+    if (std::abs(along) < 1e-6f) return false;
+    const float s = (through - origin).dot(normal) / along;
+    if (!(s > 0.0f)) return false;
+    point = origin + s * direction;
+    return true;
+}
+
+int pick_capsule(const Scene& scene, const ViewProjection& vp, Eigen::Vector2f ndc, float slack) {
+    Eigen::Vector3f origin, direction;
+    view_ray(vp, ndc, origin, direction);
     int best = -1;
     float best_along = std::numeric_limits<float>::max();
     for (const Capsule& capsule : scene.capsules) {

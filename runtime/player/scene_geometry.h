@@ -14,6 +14,14 @@ namespace kumite::view {
 // `slack` (bones are thin). `ndc`: the point in normalized device coordinates (-1..1, y up). Returns the capsule's id, or -1.
 int pick_capsule(const Scene& scene, const ViewProjection& view_projection, Eigen::Vector2f ndc, float slack = 1.5f);
 
+// The ray from the eye through a viewport point (normalized device coordinates), world; direction unit length.
+void view_ray(const ViewProjection& view_projection, Eigen::Vector2f ndc, Eigen::Vector3f& origin, Eigen::Vector3f& direction);
+
+// Where the ray through `ndc` meets the plane through `through` that faces the camera (for dragging a point in
+// the view). False when it misses (behind the eye).
+bool point_on_facing_plane(const ViewProjection& view_projection, Eigen::Vector2f ndc, const Eigen::Vector3f& through,
+                           Eigen::Vector3f& point);
+
 // World point -> normalized device coordinates and the eye-space depth (positive in front of the eye).
 // Returns false behind the eye.
 bool project_point(const ViewProjection& view_projection, const Eigen::Vector3f& world, Eigen::Vector2f& ndc, float& depth);

@@ -48,25 +48,6 @@ void add_path(Scene& scene, const StrikePlayback& playback, int from, int to, co
     if (line.points.size() > 1) scene.polylines.push_back(std::move(line));
 }
 
-Scene cell_scene(const StrikePlayback& playback, int frame, int first_shown) {
-    Scene scene;
-    scene.floor_half_size_m = 2.0f;
-    add_character(scene, playback, frame);
-    Sphere target;
-    target.center = playback.target.cast<float>();
-    target.radius_m = 0.035f;
-    target.color = k_target_color;
-    scene.spheres.push_back(target);
-    Sphere effector;
-    effector.center = playback.effector_path[frame].cast<float>();
-    effector.radius_m = 0.022f;
-    effector.color = {1.0f, 1.0f, 1.0f};
-    scene.spheres.push_back(effector);
-    add_path(scene, playback, first_shown, std::min(frame, playback.contact_frame), k_path_to_contact);
-    if (frame > playback.contact_frame) add_path(scene, playback, playback.contact_frame, frame, k_path_after_contact);
-    return scene;
-}
-
 // Moves the camera back or forth until the box's corners fill 90% of the view (the box centred).
 ViewProjection camera_fitting(OrbitCamera& camera, const Eigen::AlignedBox3f& box, float aspect) {
     camera.frame(box);
@@ -85,6 +66,25 @@ ViewProjection camera_fitting(OrbitCamera& camera, const Eigen::AlignedBox3f& bo
 }
 
 } // namespace
+
+void strike_frame_scene(const StrikePlayback& playback, int frame, int first_path_frame, Scene& scene) {
+    scene.clear();
+    scene.floor_half_size_m = 2.0f;
+    if (frame < 0 || frame >= playback.motion.frame_count()) return;
+    add_character(scene, playback, frame);
+    Sphere target;
+    target.center = playback.target.cast<float>();
+    target.radius_m = 0.035f;
+    target.color = k_target_color;
+    scene.spheres.push_back(target);
+    Sphere effector;
+    effector.center = playback.effector_path[frame].cast<float>();
+    effector.radius_m = 0.022f;
+    effector.color = {1.0f, 1.0f, 1.0f};
+    scene.spheres.push_back(effector);
+    add_path(scene, playback, first_path_frame, std::min(frame, playback.contact_frame), k_path_to_contact);
+    if (frame > playback.contact_frame) add_path(scene, playback, playback.contact_frame, frame, k_path_after_contact);
+}
 
 std::vector<int> filmstrip_frames(const StrikePlayback& playback, const FilmstripOptions& options) {
     std::vector<int> frames;
@@ -128,6 +128,7 @@ QImage strike_filmstrip_render(const StrikePlayback& playback, const QString& ti
     painter.setFont(font);
     painter.drawText(QRect(8, 0, image.width() - 16, title_h), Qt::AlignVCenter | Qt::AlignLeft, title);
     const int first_shown = std::max(0, frames.front() - 2 * options.frame_step);
+    Scene scene;
     for (int r = 0; r < 2; ++r) {
         OrbitCamera camera;
         camera.fov_y_deg = 20.0f;
@@ -140,7 +141,8 @@ QImage strike_filmstrip_render(const StrikePlayback& playback, const QString& ti
         for (int c = 0; c < columns; ++c) {
             const int frame = frames[c];
             const QRect cell(label_w + c * options.cell_width_px, top, options.cell_width_px - 2, options.cell_height_px - 2);
-            paint_scene(painter, cell_scene(playback, frame, first_shown), vp, cell);
+            strike_frame_scene(playback, frame, first_shown, scene);
+            paint_scene(painter, scene, vp, cell);
             const bool contact = frame == playback.contact_frame;
             painter.setPen(contact ? QColor(255, 80, 70) : QColor(220, 220, 228));
             const QString label = QString("frame %1%2").arg(frame).arg(contact ? "  contact" : "");

@@ -4,6 +4,8 @@
 // the hit point's path (yellow up to the contact, blue after it), frame numbers, the contact frame framed in red.
 // Used by `kumite adapt --filmstrip` and the annotation window's preview. Needs a QGuiApplication.
 
+#include "scene.h"
+
 #include "kumite/runtime/strike_playback.h"
 
 #include <QImage>
@@ -18,6 +20,11 @@ struct FilmstripOptions {
     int cell_width_px = 190;
     int cell_height_px = 290;
 };
+
+// Frame `frame` of a played strike as a Scene: the character, the target, the effector, and the hit point's path
+// from `first_path_frame` (yellow to the contact, blue after it). What the filmstrip's cells and the annotation
+// window's preview draw.
+void strike_frame_scene(const StrikePlayback& playback, int frame, int first_path_frame, Scene& scene);
 
 // The frame indices of `playback.motion` a filmstrip shows.
 std::vector<int> filmstrip_frames(const StrikePlayback& playback, const FilmstripOptions& options = {});

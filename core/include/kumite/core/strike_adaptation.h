@@ -62,6 +62,10 @@ struct AdaptationSettings {
     JointLimits limits;
 };
 
+// The limb (Limb) a hit segment belongs to: an arm for clavicle to hand, a leg for thigh to toe (the right leg
+// for anything else).
+int limb_of_segment(BodyPart segment);
+
 struct StrikePlan {
     int clip = -1;
     int start_frame = 0;
