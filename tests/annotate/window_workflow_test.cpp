@@ -5,6 +5,7 @@
 
 #include "heatmap_panel.h"
 #include "main_window.h"
+#include "preview_panel.h"
 #include "scene_builder.h"
 #include "scene_view.h"
 #include "support/test_paths.h"
@@ -499,4 +500,65 @@ TEST_CASE("annotate window: the scene holds a capsule per bone, the strike's dot
     for (const view::Color& color : hit_colors) CHECK(color == hit_colors.front());
     for (const view::Color& color : other_colors) CHECK(color == other_colors.front());
     CHECK(hit_colors.front() != other_colors.front());
+}
+
+TEST_CASE("annotate window: the preview plays the selected kick on every character, onto a target moved and dragged", "[annotate_window]") {
+    gui_application();
+    if (!have_captures()) { WARN("captures absent: skipped"); return; }
+    const std::filesystem::path root = temp_mocap_root("annotate-window-preview");
+    MainWindow window(root, /*interactive=*/false);
+    window.show();
+    REQUIRE(window.open_path(QString::fromStdString((root / k_kick_capture).string())));
+    settle();
+    REQUIRE(click_accept_buttons(window, 1) == 1); // one right kick from the suggestions
+    AnnotationDocument& document = window.document();
+    document.select_clip(0);
+    PreviewPanel& preview = *window.preview();
+    window.preview_dock()->raise();
+    preview.rebuild_now();
+    REQUIRE(preview.playback());
+    CHECK(preview.character_names().size() == 5);
+    for (const QString& name : preview.character_names()) {
+        preview.set_character(name);
+        REQUIRE(preview.playback());
+        const StrikePlayback& played = *preview.playback();
+        INFO(name.toStdString() << ": " << preview.status_text().toStdString());
+        // At the natural hit the strike is the clip's own: on the target at the hit, not past it, no bad joint.
+        CHECK((played.target - preview.target()).norm() < 1e-9);
+        CHECK(played.contact_frame == played.hit_frame);
+        CHECK(played.contact_error_m < 1e-3);
+        CHECK(played.overshoot_m <= 0.03);
+        CHECK(played.joint_limit_violations == 0);
+        // Moved 10 cm down and 5 cm in: still met, still stopped there.
+        preview.set_target(preview.target() + Eigen::Vector3d(0.0, -0.1, -0.05));
+        CHECK(preview.playback()->contact_error_m < 0.01);
+        CHECK(preview.playback()->overshoot_m <= 0.03);
+        CHECK(preview.playback()->joint_limit_violations == 0);
+        CHECK(preview.status_text().contains("joint-limit violations"));
+    }
+    // Shift+drag in the view moves the target in the plane facing the camera, and the strike follows it.
+    view::SceneView* view = preview.view();
+    REQUIRE(view->width() > 50);
+    const Eigen::Vector3d before = preview.target();
+    const QPointF centre(view->width() / 2.0, view->height() / 2.0);
+    auto send = [&](QEvent::Type type, QPointF point, Qt::MouseButtons buttons) {
+        QMouseEvent event(type, point, view->mapToGlobal(point), Qt::LeftButton, buttons, Qt::ShiftModifier);
+        QApplication::sendEvent(view, &event);
+    };
+    send(QEvent::MouseButtonPress, centre, Qt::LeftButton);
+    send(QEvent::MouseMove, centre + QPointF(10, -5), Qt::LeftButton);
+    send(QEvent::MouseMove, centre + QPointF(30, -25), Qt::LeftButton);
+    send(QEvent::MouseButtonRelease, centre + QPointF(30, -25), Qt::NoButton);
+    CHECK((preview.target() - before).norm() > 0.01);
+    CHECK((preview.playback()->target - preview.target()).norm() < 1e-9);
+    // The picture of it, as `kumite adapt --filmstrip` draws it.
+    const std::filesystem::path strip = test::make_temp_dir("annotate-preview-strip") / "strip.png";
+    QString error;
+    CHECK(preview.save_filmstrip(QString::fromStdString(strip.string()), &error));
+    CHECK(std::filesystem::file_size(strip) > 10000);
+    if (const char* keep = std::getenv("KUMITE_PREVIEW_SCREENSHOT")) window.write_screenshot(keep);
+    // A clip that is no strike shows why there is nothing to preview.
+    document.select_clip(-1);
+    preview.rebuild_now();
+    CHECK_FALSE(preview.playback());
 }

@@ -2,6 +2,7 @@
 
 #include "clip_panel.h"
 #include "heatmap_panel.h"
+#include "preview_panel.h"
 #include "issues_panel.h"
 #include "scene_builder.h"
 #include "scene_view.h"
@@ -77,12 +78,15 @@ void MainWindow::build_docks() {
     QDockWidget* clips_dock = add_dock(tr("Clips"), m_clips, Qt::RightDockWidgetArea);
     m_issues_dock = add_dock(tr("Issues"), m_issues, Qt::BottomDockWidgetArea);
     m_heatmap_dock = add_dock(tr("Heatmap"), m_heatmap, Qt::RightDockWidgetArea);
+    m_preview = new PreviewPanel(*m_document, this);
+    m_preview_dock = add_dock(tr("Preview"), m_preview, Qt::RightDockWidgetArea);
     auto* history = new QUndoView(m_document->undo_stack(), this);
     history->setEmptyLabel(tr("<opened>"));
     QDockWidget* history_dock = add_dock(tr("History"), history, Qt::BottomDockWidgetArea);
     tabifyDockWidget(timeline_dock, m_issues_dock);
     tabifyDockWidget(m_issues_dock, history_dock);
     tabifyDockWidget(clips_dock, m_heatmap_dock);
+    tabifyDockWidget(m_heatmap_dock, m_preview_dock);
     timeline_dock->raise();
     clips_dock->raise();
     resizeDocks({timeline_dock}, {300}, Qt::Vertical);

@@ -1,7 +1,7 @@
 #pragma once
 // The kumite-annotate main window: the viewport in the middle (SceneView: skeleton, hit trajectory, contact
 // point, hit-path box; click a bone to set the hit segment), docks for the timeline, the clips, the issues and
-// the heatmap, and the File/Edit/View menus. The window owns one AnnotationDocument and its Autosaver; panels
+// the heatmap and the preview on a character, and the File/Edit/View menus. The window owns one AnnotationDocument and its Autosaver; panels
 // edit the document only through its undo commands.
 
 #include "annotation_document.h"
@@ -22,6 +22,7 @@ namespace kumite::annotate {
 
 class ClipPanel;
 class HeatmapPanel;
+class PreviewPanel;
 class IssuesPanel;
 class TimelinePanel;
 class TrajectoryCache;
@@ -41,6 +42,8 @@ public:
     bool save();
     bool save_as();
     void bake();
+    PreviewPanel* preview() const { return m_preview; }
+    QDockWidget* preview_dock() const { return m_preview_dock; }
     // Renders the whole window into a PNG.
     bool write_screenshot(const QString& path);
 
@@ -77,6 +80,8 @@ private:
     IssuesPanel* m_issues = nullptr;
     HeatmapPanel* m_heatmap = nullptr;
     QDockWidget* m_heatmap_dock = nullptr;
+    PreviewPanel* m_preview = nullptr;
+    QDockWidget* m_preview_dock = nullptr;
     QDockWidget* m_issues_dock = nullptr;
     QMenu* m_recent_menu = nullptr;
     QString m_last_trajectory_message;
