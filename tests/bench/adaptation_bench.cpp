@@ -92,9 +92,9 @@ int main(int argc, char** argv) {
     RetrievalWorkspace workspace = retriever.make_workspace();
 
     std::map<std::string, Tally> tallies;
-    std::map<std::string, std::vector<double>> cost_by_regime;
+    std::map<std::string, std::vector<double>> cost_by_regime, least_cost_by_regime;
     std::map<std::string, std::vector<double>> blend_pop; // per blend mode: largest joint acceleration, m/s^2
-    std::vector<double> baseline_decode_us;
+    std::vector<double> baseline_decode_us, least_baseline_decode_us;
     std::array<int, 5> violations_by_joint{}; // elbow l, elbow r, knee l, knee r, trunk: frames
     long allocations = 0, frames_stepped = 0;
     SplitMix64 random{seed};
@@ -170,7 +170,17 @@ int main(int argc, char** argv) {
                 kumite::test::allocation_counting(false);
                 allocations += kumite::test::allocations_counted();
                 ++frames_stepped;
-                cost_by_regime[frame.reach == Reach::limb ? "limb_only" : frame.reach == Reach::torso ? "limb_and_trunk" : "unreachable"].push_back(elapsed);
+                const char* regime = frame.reach == Reach::limb ? "limb_only" : frame.reach == Reach::torso ? "limb_and_trunk" : "unreachable";
+                cost_by_regime[regime].push_back(elapsed);
+                // The same frame twice more (a step is a function of its index): the least of the three is the
+                // frame's cost without the scheduler's interruptions, which on a shared machine reach 50 us.
+                double least = elapsed;
+                for (int repeat = 0; repeat < 2; ++repeat) {
+                    const auto again = Clock::now();
+                    adapter.step(i, pose);
+                    least = std::min(least, std::chrono::duration<double, std::micro>(Clock::now() - again).count());
+                }
+                least_cost_by_regime[regime].push_back(least);
                 if (frame.contact) at_contact = frame;
                 if (i + 1 == adapter.contact_index()) before_contact = frame.effector;
                 overshoot = std::max(overshoot, frame.past_target_m);
@@ -185,10 +195,16 @@ int main(int argc, char** argv) {
                     lift = std::max(lift, ankle.y() - pin.y());
                 }
                 // Baseline: the same clip frame decoded plainly, no blend, no pins, no IK.
-                const auto base_started = Clock::now();
-                db_mir_frame_load(plain_frame, db.mir_frames[db.clips[retrieved.clip].first_pose + retrieved.start_frame + i]);
-                plain_decoder.decode(pose, plain_frame);
-                baseline_decode_us.push_back(std::chrono::duration<double, std::micro>(Clock::now() - base_started).count());
+                double base_least = 1e300;
+                for (int repeat = 0; repeat < 3; ++repeat) {
+                    const auto base_started = Clock::now();
+                    db_mir_frame_load(plain_frame, db.mir_frames[db.clips[retrieved.clip].first_pose + retrieved.start_frame + i]);
+                    plain_decoder.decode(pose, plain_frame);
+                    const double base_us = std::chrono::duration<double, std::micro>(Clock::now() - base_started).count();
+                    if (repeat == 0) baseline_decode_us.push_back(base_us);
+                    base_least = std::min(base_least, base_us);
+                }
+                least_baseline_decode_us.push_back(base_least);
             }
             // The pop of each blend mode: joint accelerations from the still guard into the first frames.
             const double dt = db.meta.frame_time_s;
@@ -245,6 +261,9 @@ int main(int argc, char** argv) {
                                                          {"trunk", violations_by_joint[4]}};
     for (const auto& [regime, costs] : cost_by_regime) report["frame_cost_us"][regime] = summary(costs);
     report["frame_cost_us"]["baseline_plain_decode"] = summary(baseline_decode_us);
+    // The least of three runs of each frame: the work itself, without the machine's interruptions.
+    for (const auto& [regime, costs] : least_cost_by_regime) report["frame_cost_us_least_of_3"][regime] = summary(costs);
+    report["frame_cost_us_least_of_3"]["baseline_plain_decode"] = summary(least_baseline_decode_us);
     report["allocations_per_frame"] = double(allocations) / std::max(1L, frames_stepped);
     for (const auto& [mode, values] : blend_pop) report["blend_pop_m_s2"][mode] = summary(values);
     report["frames"] = frames_stepped;
