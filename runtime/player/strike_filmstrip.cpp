@@ -74,8 +74,9 @@ void strike_frame_scene(const StrikePlayback& playback, int frame, int first_pat
     add_character(scene, playback, frame);
     Sphere target;
     target.center = playback.target.cast<float>();
-    target.radius_m = 0.035f;
+    target.radius_m = 0.05f; // wider than a hand or foot capsule, so the contact still shows it
     target.color = k_target_color;
+    target.opacity = 0.85f;
     scene.spheres.push_back(target);
     Sphere effector;
     effector.center = playback.effector_path[frame].cast<float>();

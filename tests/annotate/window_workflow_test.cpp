@@ -556,7 +556,12 @@ TEST_CASE("annotate window: the preview plays the selected kick on every charact
     QString error;
     CHECK(preview.save_filmstrip(QString::fromStdString(strip.string()), &error));
     CHECK(std::filesystem::file_size(strip) > 10000);
-    if (const char* keep = std::getenv("KUMITE_PREVIEW_SCREENSHOT")) window.write_screenshot(keep);
+    // The README's picture of the dock: KUMITE_PREVIEW_SCREENSHOT=OUT.png build/bin/annotate_window_tests "*preview*"
+    if (const char* keep = std::getenv("KUMITE_PREVIEW_SCREENSHOT")) {
+        preview.pause();
+        preview.seek(preview.playback()->contact_frame);
+        window.write_screenshot(keep);
+    }
     // A clip that is no strike shows why there is nothing to preview.
     document.select_clip(-1);
     preview.rebuild_now();

@@ -79,6 +79,8 @@ PreviewPanel::PreviewPanel(AnnotationDocument& document, QWidget* parent) : QWid
     layout->addLayout(buttons);
     m_figures = new QLabel(this);
     m_figures->setWordWrap(true);
+    m_figures->setMinimumHeight(4 * m_figures->fontMetrics().lineSpacing());
+    m_figures->setAlignment(Qt::AlignTop | Qt::AlignLeft);
     m_figures->setTextInteractionFlags(Qt::TextSelectableByMouse);
     layout->addWidget(m_figures);
 
@@ -248,6 +250,16 @@ void PreviewPanel::show_frame() {
     const int frame = std::clamp(m_frame, 0, m_playback->motion.frame_count() - 1);
     view::strike_frame_scene(*m_playback, frame, 0, m_view->scene());
     m_view->update();
+}
+
+void PreviewPanel::seek(int frame) {
+    m_frame = frame;
+    show_frame();
+}
+
+void PreviewPanel::pause() {
+    m_play_timer->stop();
+    m_play->setText(tr("Play"));
 }
 
 void PreviewPanel::update_target_boxes() {

@@ -45,6 +45,9 @@ public:
     // Bakes and plays the selected clip now instead of after the short delay edits wait for.
     void rebuild_now();
     bool save_filmstrip(const QString& path, QString* error = nullptr) const;
+    // Shows frame `frame` of the playback (it goes on playing from there unless paused).
+    void seek(int frame);
+    void pause();
 
 signals:
     void replayed(); // a new playback is shown
