@@ -107,26 +107,42 @@ void StrikeAdapter::begin(const StrikePlan& plan, const MirFrame& current, const
     m_impact = true;
     const AdaptedFrame at_contact = step(contact_index(), m_scratch_pose);
     if (at_contact.reach == Reach::unreachable) m_stop_point = at_contact.effector;
-    // The approach: the way the effector itself travels into the stop point, over the last frame before the
-    // contact (two when it barely moves; from the limb's root when it arrives at rest). A chord from further back
-    // would miss the last turn of a sweeping kick, which then slides on through the target.
-    m_approach = (m_stop_point - m_decoder.model_positions()[m_rig.anatomy().limbs[m_limb].root]).normalized();
-    for (int back = 1; back <= 2 && contact_index() - back >= 0; ++back) {
+    // The approach: the ways the effector itself travels into the stop point over the last 1 to 4 frames before
+    // the contact (chords of its path that move at least a centimetre; from the limb's root when it arrives at
+    // rest). A sweeping kick or a hook turns in its last frames: stopped along its final direction alone, it
+    // would carry on along the way it came from, across and into the target.
+    const Eigen::Vector3d from_root = m_stop_point - m_decoder.model_positions()[m_rig.anatomy().limbs[m_limb].root];
+    m_approach_count = 0;
+    for (int back = 1; back <= k_approach_chords && contact_index() - back >= 0; ++back) {
         const Eigen::Vector3d arriving = at_contact.effector - step(contact_index() - back, m_scratch_pose).effector;
-        if (arriving.norm() > 0.01) {
-            m_approach = arriving.normalized();
-            break;
-        }
+        if (arriving.norm() > 0.01) m_approaches[m_approach_count++] = arriving.normalized();
     }
+    if (m_approach_count == 0) m_approaches[m_approach_count++] = from_root.normalized();
+    m_approach = m_approaches[0];
+}
+
+double StrikeAdapter::past_stop(const Eigen::Vector3d& point) const {
+    double past = 0.0;
+    for (int k = 0; k < m_approach_count; ++k) past = std::max(past, (point - m_stop_point).dot(m_approaches[k]));
+    return past;
 }
 
 bool StrikeAdapter::stop_at_target(LimbPins& pins, double index) const {
     if (!m_impact || index <= contact_index()) return false;
-    // Past the target along the approach by s: squashed to softness * (1 - exp(-s / softness)), C1 at s = 0.
-    const double past = (m_decoder.limb_targets()[m_limb] - m_stop_point).dot(m_approach);
+    // Past the target along an approach direction by s: squashed to softness * (1 - exp(-s / softness)), C1 at
+    // s = 0. The directions are not orthogonal: a few passes settle the point inside all of them.
     const double softness = m_settings.overshoot_softness_m;
-    if (!(past > 0.0) || softness <= 0.0) return false;
-    pins.extremity_offset_world[m_limb] -= (past - softness * (1.0 - std::exp(-past / softness))) * m_approach;
+    if (softness <= 0.0) return false;
+    const Eigen::Vector3d wanted = m_decoder.limb_targets()[m_limb];
+    Eigen::Vector3d correction = Eigen::Vector3d::Zero();
+    for (int pass = 0; pass < 3; ++pass) {
+        for (int k = 0; k < m_approach_count; ++k) {
+            const double past = (wanted + correction - m_stop_point).dot(m_approaches[k]);
+            if (past > 0.0) correction -= (past - softness * (1.0 - std::exp(-past / softness))) * m_approaches[k];
+        }
+    }
+    if (correction.squaredNorm() == 0.0) return false;
+    pins.extremity_offset_world[m_limb] += correction;
     return true;
 }
 
@@ -259,7 +275,7 @@ AdaptedFrame StrikeAdapter::step(double index, Pose& out) {
             result.effector = m_decoder.model_positions()[m_effector_joint];
         }
     }
-    if (index > contact_index()) result.past_target_m = std::max(0.0, (result.effector - m_stop_point).dot(m_approach));
+    if (index > contact_index()) result.past_target_m = past_stop(result.effector);
     result.joint_violations = violations();
     return result;
 }

@@ -18,7 +18,7 @@
 //     were when the strike began, for the whole strike; a kick's kicking foot is free. When the clip's hips rise
 //     beyond what a pinned leg reaches, the hips are lowered towards the foot instead of lifting it.
 //  6. impact: after the contact the hit point may not go past the target (out of reach: the closest point it got
-//     to at the contact) along the strike's approach direction by more than a soft margin (overshoot_softness_m, approached smoothly), so a strike that lands stops at the
+//     to at the contact) along any of the strike's approach directions (its path's chords over the last frames) by more than a soft margin (overshoot_softness_m, approached smoothly), so a strike that lands stops at the
 //     target and then recovers along the clip's own retraction, offset-corrected. set_impact(false) lets the
 //     strike follow through instead (the user dodged: a visible miss).
 //  7. plausible joints (joint_limits.h): a limb whose extremity is moved keeps bending the way the clip bends it
@@ -85,7 +85,7 @@ struct AdaptedFrame {
     std::array<double, 3> pivot_turn_rad{};             // how far the CCD turned each pivot (within its limit)
     bool contact = false;                               // the contact frame
     double past_target_m = 0.0;   // after the contact: how far the effector is past the target (out of reach: the
-                                  // closest point reached at the contact) along the approach
+                                  // closest point reached at the contact) along the farthest approach direction
     unsigned joint_violations = 0; // joint_limits.h mask
 };
 
@@ -103,8 +103,9 @@ public:
     // Step 6 on (the default at begin()) or off; the fighter turns it off when the user is no longer at the target.
     void set_impact(bool impact) { m_impact = impact; }
     bool impact() const { return m_impact; }
-    // The unit direction in which the hit point arrives at the target (world), and where it stops: the target, or
-    // out of reach the closest point it gets to at the contact. Found at begin().
+    // The unit direction in which the hit point arrives at the target over the frame before the contact (world;
+    // the impact also holds it along its chords over the 2 to 4 frames before), and where it stops: the target,
+    // or out of reach the closest point it gets to at the contact. Found at begin().
     const Eigen::Vector3d& approach_direction() const { return m_approach; }
     const Eigen::Vector3d& stop_point() const { return m_stop_point; }
 
@@ -132,6 +133,8 @@ private:
     // swivels that keep the clip's bends for the limbs whose extremity is moved. Each returns whether it changed
     // anything (then the frame is decoded again).
     bool stop_at_target(LimbPins& pins, double index) const;
+    // How far `point` is past the stop point along the farthest of the approach directions (0 when behind all).
+    double past_stop(const Eigen::Vector3d& point) const;
     bool keep_clip_bends(const LimbPins& pins);
     // Where limb `limb`'s middle joint bulges in the clip's own frame, from the decoded root (zero if straight).
     Eigen::Vector3d clip_bend(int limb) const;
@@ -162,6 +165,9 @@ private:
     std::array<Eigen::Vector3d, 2> m_support_pins;
     LimbPins m_pins;
     Eigen::Vector3d m_offset_at_contact = Eigen::Vector3d::Zero(); // d(tc)
+    static constexpr int k_approach_chords = 4;
+    std::array<Eigen::Vector3d, k_approach_chords> m_approaches{}; // unit, world
+    int m_approach_count = 0;
     Eigen::Vector3d m_approach = Eigen::Vector3d::UnitZ();
     Eigen::Vector3d m_stop_point = Eigen::Vector3d::Zero(); // the target, or the closest point reached at the contact
     bool m_impact = true;
