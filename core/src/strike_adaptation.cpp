@@ -1,5 +1,6 @@
 #include "kumite/core/strike_adaptation.h"
 
+#include "kumite/core/halfspace_projection.h"
 #include "kumite/core/smoothstep.h"
 #include "kumite/core/two_bone_ik.h"
 
@@ -31,6 +32,9 @@ double constraint_ramp(double t, double t0, double tc, double recovery) {
 StrikeAdapter::StrikeAdapter(const CharacterRig& rig, const MotionDatabaseView& database, AdaptationSettings settings)
     : m_rig(rig), m_db(database), m_settings(settings), m_decoder(rig.skeleton(), rig.anatomy(), {}) {
     m_pivot_turns.fill(Eigen::Quaterniond::Identity());
+    std::size_t longest = 1;
+    for (const DbClip& clip : database.clips) longest = std::max<std::size_t>(longest, clip.frame_count);
+    m_progress.assign(longest, 0.0);
 }
 
 void StrikeAdapter::load_clip_frame(int index, MirFrame& out) const {
@@ -72,6 +76,22 @@ void StrikeAdapter::begin(const StrikePlan& plan, const MirFrame& current, const
     m_limb = limb_of_segment(static_cast<BodyPart>(std::max(0, clip.segment)));
     m_arm = m_limb < 2;
     m_effector_joint = m_rig.anatomy().limbs[m_limb].extremity;
+    // The clip's progress towards its hit, from its hit points (clip space: only ratios of distances are used).
+    {
+        auto hit_point = [&](int index) {
+            const float* p = m_db.poses[clip.first_pose + std::clamp(plan.start_frame + index, 0, int(clip.frame_count) - 1)].hit_point;
+            return Eigen::Vector3d(p[0], p[1], p[2]);
+        };
+        const int contact = std::clamp(contact_index(), 0, int(m_progress.size()) - 1);
+        const Eigen::Vector3d at_hit = hit_point(contact);
+        double farthest = 0.0;
+        for (int i = 0; i <= contact; ++i) farthest = std::max(farthest, (hit_point(i) - at_hit).norm());
+        double progress = 0.0;
+        for (int i = 0; i <= contact; ++i) {
+            progress = std::max(progress, farthest > 1e-9 ? 1.0 - (hit_point(i) - at_hit).norm() / farthest : 1.0);
+            m_progress[i] = progress;
+        }
+    }
     const std::uint32_t start_flags = m_db.poses[clip.first_pose + plan.start_frame].flags;
     for (int foot = 0; foot < 2; ++foot) {
         const bool clip_planted = start_flags & (foot == 0 ? db_pose_left_foot_planted : db_pose_right_foot_planted);
@@ -109,7 +129,7 @@ void StrikeAdapter::begin(const StrikePlan& plan, const MirFrame& current, const
     if (at_contact.reach == Reach::unreachable) m_stop_point = at_contact.effector;
     // The approach: the ways the effector itself travels into the stop point over the last 1 to 4 frames before
     // the contact (chords of its path that move at least a centimetre; from the limb's root when it arrives at
-    // rest). A sweeping kick or a hook turns in its last frames: stopped along its final direction alone, it
+    // rest, the outward direction alone). A sweeping kick or a hook turns in its last frames: stopped along its final direction alone, it
     // would carry on along the way it came from, across and into the target.
     const Eigen::Vector3d from_root = m_stop_point - m_decoder.model_positions()[m_rig.anatomy().limbs[m_limb].root];
     m_approach_count = 0;
@@ -117,7 +137,9 @@ void StrikeAdapter::begin(const StrikePlan& plan, const MirFrame& current, const
         const Eigen::Vector3d arriving = at_contact.effector - step(contact_index() - back, m_scratch_pose).effector;
         if (arriving.norm() > 0.01) m_approaches[m_approach_count++] = arriving.normalized();
     }
-    if (m_approach_count == 0) m_approaches[m_approach_count++] = from_root.normalized();
+    // And outwards from the limb's root: after the contact the fist or foot does not reach further out than the
+    // target either (a clip whose hit comes before its full extension would otherwise punch on into the air).
+    if (from_root.norm() > 1e-6) m_approaches[m_approach_count++] = from_root.normalized();
     m_approach = m_approaches[0];
 }
 
@@ -127,21 +149,37 @@ double StrikeAdapter::past_stop(const Eigen::Vector3d& point) const {
     return past;
 }
 
+double StrikeAdapter::offset_ramp(double index) const {
+    const int contact = contact_index();
+    if (m_settings.offset_ramp == OffsetRamp::time || index >= contact || contact >= int(m_progress.size())) {
+        return constraint_ramp(index, 0.0, contact, m_settings.recovery_frames);
+    }
+    if (index <= 0.0) return 0.0;
+    const int whole = static_cast<int>(std::floor(index));
+    const double fraction = index - whole;
+    const double progress = m_progress[whole] + fraction * (m_progress[std::min(whole + 1, contact)] - m_progress[whole]);
+    return smoothstep(progress);
+}
+
 bool StrikeAdapter::stop_at_target(LimbPins& pins, double index) const {
     if (!m_impact || index <= contact_index()) return false;
-    // Past the target along an approach direction by s: squashed to softness * (1 - exp(-s / softness)), C1 at
-    // s = 0. The directions are not orthogonal: a few passes settle the point inside all of them.
+    // Past the stop point along approach direction k by g_k: the least move of the hit point that brings each g_k
+    // down to softness * (1 - exp(-g_k / softness)) (C1 at g_k = 0, below the softness), and keeps the others
+    // within the softness. What goes back or aside from every approach direction (the retraction) is kept.
     const double softness = m_settings.overshoot_softness_m;
     if (softness <= 0.0) return false;
-    const Eigen::Vector3d wanted = m_decoder.limb_targets()[m_limb];
-    Eigen::Vector3d correction = Eigen::Vector3d::Zero();
-    for (int pass = 0; pass < 3; ++pass) {
-        for (int k = 0; k < m_approach_count; ++k) {
-            const double past = (wanted + correction - m_stop_point).dot(m_approaches[k]);
-            if (past > 0.0) correction -= (past - softness * (1.0 - std::exp(-past / softness))) * m_approaches[k];
-        }
+    const Eigen::Vector3d displacement = m_decoder.limb_targets()[m_limb] - m_stop_point;
+    std::array<double, k_approach_chords + 1> bounds{};
+    bool past = false;
+    for (int k = 0; k < m_approach_count; ++k) {
+        const double along = displacement.dot(m_approaches[k]);
+        bounds[k] = along > 0.0 ? softness * (1.0 - std::exp(-along / softness)) : softness;
+        past = past || along > 0.0;
     }
-    if (correction.squaredNorm() == 0.0) return false;
+    if (!past) return false;
+    const Eigen::Vector3d held = nearest_within_halfspaces(displacement, {m_approaches.data(), std::size_t(m_approach_count)},
+                                                           {bounds.data(), std::size_t(m_approach_count)}, Eigen::Vector3d::Zero());
+    const Eigen::Vector3d correction = held - displacement;
     pins.extremity_offset_world[m_limb] += correction;
     return true;
 }
@@ -259,7 +297,7 @@ AdaptedFrame StrikeAdapter::step(double index, Pose& out) {
     result.contact = index == static_cast<double>(contact_index());
     frame_mir(index, m_frame);
     m_clip_swivels = m_frame.swivel;
-    result.ramp = constraint_ramp(index, 0.0, contact_index(), m_settings.recovery_frames);
+    result.ramp = offset_ramp(index);
     LimbPins pins = m_pins;
     pins.extremity_offset_world[m_limb] = result.ramp * m_offset_at_contact;
     decode(out, m_frame, pins);

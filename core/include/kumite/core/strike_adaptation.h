@@ -7,7 +7,9 @@
 //     when the strike began over `blend_frames`: a ramp (smoothstep weight, C1 at both ends) or an
 //     inertialization (the clip plus the starting offset decayed by a quintic; BlendMode);
 //  2. the constraint ramp: the hit point is driven to p(t) + d(t), with d(t) = ramp(t) * d(tc), d(tc) the offset
-//     between where the hit point would be at the contact frame and the target (constraint_ramp below);
+//     between where the hit point would be at the contact frame and the target. Up to the contact the ramp follows
+//     the clip's own progress towards its hit (OffsetRamp::progress), so the strike arrives on the target as the
+//     clip arrives at its hit; after the contact it falls back to 0 over `recovery_frames` (constraint_ramp);
 //  3. the limb alone: the decoder's analytic two-bone solve of that limb, swivel kept;
 //  4. when the limb cannot reach, Cyclic Coordinate Descent over trunk pivots (clavicle, chest, spine base for
 //     arm strikes; the pelvis about the support hip for leg strikes), each turned so that the limb's root swings
@@ -42,6 +44,16 @@ enum class BlendMode {
     inertialization, // the clip plus the initial offset (current - clip), decayed by a quintic to 0
 };
 
+// How d(t) grows from the strike's start to the contact.
+enum class OffsetRamp {
+    // smoothstep of the clip's progress towards its hit: the hit point's distance to where it is at the hit, as a
+    // fraction of the farthest it was since the start, never decreasing. A target nearer than the clip's hit then
+    // gets a shorter strike; with time, the clip reaches its full extension while the ramp still lags, and the
+    // offset pulls the fist back onto the target at the end: a loop that arrives moving towards the body.
+    progress,
+    time, // the paper's: a smoothstep in time from the start to the contact (constraint_ramp)
+};
+
 struct AdaptationSettings {
     int blend_frames = 6;            // blend-in from the current motion (0.2 s at 30 fps)
     BlendMode blend = BlendMode::ramp;
@@ -57,8 +69,9 @@ struct AdaptationSettings {
     double pelvis_limit_rad = 30.0 * 3.14159265358979 / 180.0;
     // Impact: how far past the target the hit point may drift after the contact; the excess is squashed smoothly
     // (C1) so that the overshoot stays below this margin.
-    double overshoot_softness_m = 0.008;
+    double overshoot_softness_m = 0.005;
     bool keep_clip_bends = true; // step 7; off: the decoder's swivels as they are (for comparison)
+    OffsetRamp offset_ramp = OffsetRamp::progress;
     JointLimits limits;
 };
 
@@ -132,6 +145,8 @@ private:
     // Step 6 on the decoded frame: the offset that keeps the hit point from passing the target. Step 7: the
     // swivels that keep the clip's bends for the limbs whose extremity is moved. Each returns whether it changed
     // anything (then the frame is decoded again).
+    // Step 2's ramp at frame `index` (0 = the start frame).
+    double offset_ramp(double index) const;
     bool stop_at_target(LimbPins& pins, double index) const;
     // How far `point` is past the stop point along the farthest of the approach directions (0 when behind all).
     double past_stop(const Eigen::Vector3d& point) const;
@@ -165,8 +180,9 @@ private:
     std::array<Eigen::Vector3d, 2> m_support_pins;
     LimbPins m_pins;
     Eigen::Vector3d m_offset_at_contact = Eigen::Vector3d::Zero(); // d(tc)
+    std::vector<double> m_progress; // [frame from the start .. contact]: the clip's progress to its hit (sized once)
     static constexpr int k_approach_chords = 4;
-    std::array<Eigen::Vector3d, k_approach_chords> m_approaches{}; // unit, world
+    std::array<Eigen::Vector3d, k_approach_chords + 1> m_approaches{}; // unit, world: the chords, then outwards
     int m_approach_count = 0;
     Eigen::Vector3d m_approach = Eigen::Vector3d::UnitZ();
     Eigen::Vector3d m_stop_point = Eigen::Vector3d::Zero(); // the target, or the closest point reached at the contact
