@@ -43,13 +43,18 @@ nlohmann::json summary(std::vector<double> values) {
 
 struct Tally {
     int strikes = 0, within_1cm = 0, lifted = 0, reached = 0, overshoot_within_3cm = 0, violations = 0;
+    int arrives_towards_body = 0; // the hit point's last move before the contact points back at the limb's root
+    // Before the contact, how much further from the limb's root the hit point got than it is at the contact: a
+    // strike that reaches out past its target and is pulled back onto it (a loop) rather than extending to it.
+    std::vector<double> reach_beyond_contact;
     std::vector<double> contact_errors, drifts, overshoots, speeds;
     double worst_bone = 0.0;
     void add(const Tally& other) {
         strikes += other.strikes, within_1cm += other.within_1cm, lifted += other.lifted, reached += other.reached;
         overshoot_within_3cm += other.overshoot_within_3cm, violations += other.violations;
+        arrives_towards_body += other.arrives_towards_body;
         for (auto [to, from] : {std::pair{&contact_errors, &other.contact_errors}, {&drifts, &other.drifts}, {&overshoots, &other.overshoots},
-                                {&speeds, &other.speeds}}) {
+                                {&speeds, &other.speeds}, {&reach_beyond_contact, &other.reach_beyond_contact}}) {
             to->insert(to->end(), from->begin(), from->end());
         }
         worst_bone = std::max(worst_bone, other.worst_bone);
@@ -64,6 +69,7 @@ int main(int argc, char** argv) {
     std::uint64_t seed = 1;
     double lean = 0.1;
     bool keep_bends = true;
+    OffsetRamp offset_ramp = OffsetRamp::progress;
     std::filesystem::path characters_dir = std::getenv("KUMITE_CHARACTERS_DIR") ? std::getenv("KUMITE_CHARACTERS_DIR") : "data/characters";
     for (int i = 1; i < argc; ++i) {
         const std::string argument = argv[i];
@@ -72,6 +78,7 @@ int main(int argc, char** argv) {
         else if (argument == "--lean" && i + 1 < argc) lean = std::atof(argv[++i]);
         else if (argument == "--characters-dir" && i + 1 < argc) characters_dir = argv[++i];
         else if (argument == "--no-keep-bends") keep_bends = false;
+        else if (argument == "--offset-ramp" && i + 1 < argc) offset_ramp = std::string(argv[++i]) == "time" ? OffsetRamp::time : OffsetRamp::progress;
         else if (!argument.starts_with("--") && database_path.empty()) database_path = argument;
         else {
             std::cerr << "usage: adaptation_bench DB.kdb [--targets N] [--seed S] [--lean M] [--characters-dir DIR] [--no-keep-bends]\n";
@@ -123,6 +130,7 @@ int main(int argc, char** argv) {
         MirDecoder plain_decoder(skeleton, *anatomy, {});
         AdaptationSettings settings;
         settings.keep_clip_bends = keep_bends;
+        settings.offset_ramp = offset_ramp;
         StrikeAdapter adapter(rig, db, settings);
         Pose pose;
         rig.decode(pose, db, 0); // sizes the reused pose: the measured steps must not
@@ -160,7 +168,8 @@ int main(int argc, char** argv) {
             ++tally.strikes;
             double drift = 0.0, lift = 0.0, overshoot = 0.0;
             AdaptedFrame at_contact;
-            Eigen::Vector3d before_contact = Eigen::Vector3d::Zero();
+            Eigen::Vector3d before_contact = Eigen::Vector3d::Zero(), root_at_contact = Eigen::Vector3d::Zero();
+            std::vector<double> extensions;
             for (int i = 0; i < adapter.frame_count(); ++i) {
                 kumite::test::allocation_count_reset();
                 kumite::test::allocation_counting(true);
@@ -181,7 +190,12 @@ int main(int argc, char** argv) {
                     least = std::min(least, std::chrono::duration<double, std::micro>(Clock::now() - again).count());
                 }
                 least_cost_by_regime[regime].push_back(least);
-                if (frame.contact) at_contact = frame;
+                const int limb_root = skeleton.parents[skeleton.parents[adapter.effector_joint()]];
+                if (i <= adapter.contact_index()) extensions.push_back((frame.effector - adapter.positions()[limb_root]).norm());
+                if (frame.contact) {
+                    at_contact = frame;
+                    root_at_contact = adapter.positions()[skeleton.parents[skeleton.parents[adapter.effector_joint()]]];
+                }
                 if (i + 1 == adapter.contact_index()) before_contact = frame.effector;
                 overshoot = std::max(overshoot, frame.past_target_m);
                 tally.violations += joint_violation_count(frame.joint_violations);
@@ -233,16 +247,22 @@ int main(int argc, char** argv) {
             tally.overshoots.push_back(overshoot);
             tally.overshoot_within_3cm += overshoot <= 0.03;
             tally.speeds.push_back((at_contact.effector - before_contact).norm() / dt);
+            const Eigen::Vector3d arriving = at_contact.effector - before_contact;
+            if (!extensions.empty()) tally.reach_beyond_contact.push_back(*std::max_element(extensions.begin(), extensions.end()) - extensions.back());
+            tally.arrives_towards_body += arriving.norm() > 0.01 && arriving.dot(at_contact.effector - root_at_contact) < 0.0;
         }
     }
     nlohmann::json report = {{"benchmark", "adaptation"}, {"database", database_path}, {"targets_per_character", targets}, {"lean_m", lean},
-                             {"keep_clip_bends", keep_bends}};
+                             {"keep_clip_bends", keep_bends},
+                             {"offset_ramp", offset_ramp == OffsetRamp::time ? "time" : "progress"}};
     auto tally_json = [](const Tally& tally) {
         return nlohmann::json{{"strikes", tally.strikes},
                               {"contact_within_1cm_rate", double(tally.within_1cm) / std::max(1, tally.strikes)},
                               {"reached_rate", double(tally.reached) / std::max(1, tally.strikes)},
                               {"overshoot_within_3cm_rate", double(tally.overshoot_within_3cm) / std::max(1, tally.strikes)},
                               {"support_foot_lifted", tally.lifted},
+                              {"arrives_towards_body", tally.arrives_towards_body},
+                              {"reach_beyond_contact_m", summary(tally.reach_beyond_contact)},
                               {"joint_limit_violations", tally.violations},
                               {"contact_error_m", summary(tally.contact_errors)},
                               {"overshoot_m", summary(tally.overshoots)},
