@@ -23,6 +23,21 @@ void strike_path_world(const Fighter& fighter, const MotionDatabaseView& db, std
     }
 }
 
+void add_skeleton_capsules(Scene& scene, const Skeleton& skeleton, std::span<const Eigen::Vector3d> model_positions, float radius_m,
+                           const Color& color, int id_base) {
+    for (int joint = 1; joint < skeleton.joint_count() && joint < int(model_positions.size()); ++joint) {
+        const int parent = skeleton.parents[joint];
+        if (parent < 0) continue;
+        Capsule bone;
+        bone.a = model_positions[parent].cast<float>();
+        bone.b = model_positions[joint].cast<float>();
+        bone.radius_m = radius_m;
+        bone.color = color;
+        bone.id = id_base < 0 ? -1 : id_base + joint;
+        scene.capsules.push_back(bone);
+    }
+}
+
 void player_scene_build(const Bout& bout, Scene& scene) {
     scene.clear();
     scene.floor_half_size_m = 3.0f;
@@ -31,18 +46,7 @@ void player_scene_build(const Bout& bout, Scene& scene) {
         const Skeleton& skeleton = bout.character_skeleton(fighter.character());
         const auto positions = fighter.positions();
         const Color color = k_fighter_colors[f % 4];
-        const float radius = float(0.045 * fighter.leg_length() / 0.9);
-        for (int joint = 1; joint < skeleton.joint_count() && joint < int(positions.size()); ++joint) {
-            const int parent = skeleton.parents[joint];
-            if (parent < 0) continue;
-            Capsule bone;
-            bone.a = positions[parent].cast<float>();
-            bone.b = positions[joint].cast<float>();
-            bone.radius_m = radius;
-            bone.color = color;
-            bone.id = f * 1000 + joint;
-            scene.capsules.push_back(bone);
-        }
+        add_skeleton_capsules(scene, skeleton, positions, float(0.045 * fighter.leg_length() / 0.9), color, f * 1000);
         if (fighter.state() != FighterState::strike) continue;
         Sphere target;
         target.center = fighter.latched_target().cast<float>();

@@ -10,6 +10,11 @@
 
 namespace kumite::view {
 
+// A skeleton's bones as capsules: one per joint with a parent, from the parent to the joint, picking id
+// `id_base + joint`. `model_positions`: world metres, [joint].
+void add_skeleton_capsules(Scene& scene, const Skeleton& skeleton, std::span<const Eigen::Vector3d> model_positions, float radius_m,
+                           const Color& color, int id_base = -1);
+
 // Rebuilds `scene` from the bout's current frame.
 void player_scene_build(const Bout& bout, Scene& scene);
 

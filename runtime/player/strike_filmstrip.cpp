@@ -1,5 +1,6 @@
 #include "strike_filmstrip.h"
 
+#include "player_scene.h"
 #include "scene_geometry.h"
 #include "scene_painter.h"
 
@@ -23,19 +24,8 @@ const Color k_path_to_contact{1.0f, 0.85f, 0.2f};
 const Color k_path_after_contact{0.35f, 0.7f, 1.0f};
 
 void add_character(Scene& scene, const StrikePlayback& playback, int frame) {
-    const Skeleton& skeleton = playback.motion.skeleton;
     const auto positions = playback.positions(frame);
-    const float radius = 0.035f * float(std::max(0.5, positions[0].y()) / 0.95);
-    for (int joint = 1; joint < skeleton.joint_count(); ++joint) {
-        const int parent = skeleton.parents[joint];
-        if (parent < 0) continue;
-        Capsule bone;
-        bone.a = positions[parent].cast<float>();
-        bone.b = positions[joint].cast<float>();
-        bone.radius_m = radius;
-        bone.color = k_body_color;
-        scene.capsules.push_back(bone);
-    }
+    add_skeleton_capsules(scene, playback.motion.skeleton, positions, 0.035f * float(std::max(0.5, positions[0].y()) / 0.95), k_body_color);
 }
 
 void add_path(Scene& scene, const StrikePlayback& playback, int from, int to, const Color& color) {

@@ -310,6 +310,17 @@ void Fighter::begin_strike() {
     body.adapter.set_impact(m_strike_impact); // a switch after the contact keeps the strike's outcome
 }
 
+FighterEvent Fighter::strike_event(FighterEvent::Type type, double t_s) const {
+    FighterEvent event;
+    event.type = type;
+    event.t_s = t_s;
+    event.semantics = m_strike_semantics;
+    event.side = m_strike_side;
+    event.clip = m_plan.clip;
+    event.impact = m_strike_impact;
+    return event;
+}
+
 void Fighter::play_strike(double t_s) {
     Body& body = *m_bodies[m_character];
     StrikeAdapter& adapter = body.adapter;
@@ -331,17 +342,11 @@ void Fighter::play_strike(double t_s) {
     m_strike_violations += joint_violation_count(frame.joint_violations);
     if (at_contact) {
         m_contact_done = true;
-        FighterEvent event;
-        event.type = FighterEvent::Type::strike;
-        event.t_s = t_s;
-        event.semantics = m_strike_semantics;
-        event.side = m_strike_side;
-        event.clip = m_plan.clip;
+        FighterEvent event = strike_event(FighterEvent::Type::strike, t_s);
         event.contact_error_m = (frame.effector - m_plan.target_world).norm();
         event.head_distance_m = m_tracking ? (frame.effector - m_head).norm() : 1e9;
         event.hit = event.head_distance_m <= m_settings.hit_radius_m;
         event.range_m = m_strike_range_m;
-        event.impact = m_strike_impact;
         if (m_previous_effector_s >= 0.0 && t_s > m_previous_effector_s) {
             event.effector_speed_mps = (frame.effector - m_previous_effector).norm() / (t_s - m_previous_effector_s);
         }
@@ -351,13 +356,7 @@ void Fighter::play_strike(double t_s) {
     m_previous_effector_s = t_s;
     body.encoder.encode(m_mir, m_pose.view());
     if (index >= adapter.frame_count() - 1) {
-        FighterEvent event;
-        event.type = FighterEvent::Type::strike_end;
-        event.t_s = t_s;
-        event.semantics = m_strike_semantics;
-        event.side = m_strike_side;
-        event.clip = m_plan.clip;
-        event.impact = m_strike_impact;
+        FighterEvent event = strike_event(FighterEvent::Type::strike_end, t_s);
         event.overshoot_m = m_strike_overshoot_m;
         event.joint_limit_violations = m_strike_violations;
         push_event(event);

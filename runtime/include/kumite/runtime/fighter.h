@@ -110,6 +110,7 @@ private:
     void start_strike(double t_s);
     void begin_strike(); // the current body's adapter on m_plan, from m_strike_start
     void play_strike(double t_s);
+    FighterEvent strike_event(FighterEvent::Type type, double t_s) const; // a strike or strike_end event of the strike
     void finish_frame();
     bool order_fits(int semantics, const char*& why) const;
     HeadingFrame heading_towards_user() const;
