@@ -176,3 +176,48 @@ TEST_CASE("joint limits: a knee bent backwards is a violation, the clip's own be
     CHECK_FALSE(limb_bend_flipped(limb_bend_direction(shoulder, elbow_side, wrist), down));
     CHECK(limb_bend_flipped(limb_bend_direction(shoulder, elbow_up_side, wrist), down));
 }
+
+TEST_CASE("impact: near targets get a shorter strike, not a full one pulled back onto them at the end", "[adaptation][corpus]") {
+    // Seen in filmstrips with the paper's time ramp: the fist reaches its full extension while the ramp lags,
+    // then the offset pulls it back onto the target, and it arrives moving towards the body. The progress ramp
+    // (the default) follows the clip's own approach to its hit instead.
+    const MotionDatabaseContent* content = reference_database();
+    if (!content) return;
+    const MotionDatabaseView db = content->view();
+    const Retriever retriever(db);
+    int towards_body[2] = {0, 0}, strikes = 0;
+    for (const char* name : k_characters) {
+        const kumite::test::StandingCharacter character(name, db);
+        for (const Side side : {Side::left, Side::right}) {
+            const Limb limb = side == Side::left ? Limb::arm_l : Limb::arm_r;
+            const LimbChain& chain = character.anatomy.limbs[int(limb)];
+            const Eigen::Vector3d shoulder = character.rig->positions()[chain.root];
+            for (const double fraction : {0.5, 0.6, 0.7}) {
+                for (const double height : {-0.15, 0.0, 0.1}) {
+                    const Eigen::Vector3d target = shoulder + fraction * chain.length() * Eigen::Vector3d(0.0, height, 1.0).normalized();
+                    RetrievalWorkspace workspace = retriever.make_workspace();
+                    const RetrievalResult found = retriever.query(character.order(retriever, "punch", side, target), workspace);
+                    REQUIRE(found.found);
+                    ++strikes;
+                    for (const OffsetRamp ramp : {OffsetRamp::progress, OffsetRamp::time}) {
+                        AdaptationSettings settings;
+                        settings.offset_ramp = ramp;
+                        StrikeAdapter adapter(*character.rig, db, settings);
+                        adapter.begin({found.clip, found.start_frame, found.contact_frame, found.clip_to_world, target}, character.mir,
+                                      {true, true}, character.ankles);
+                        Pose pose;
+                        const Eigen::Vector3d before = adapter.step(std::max(0, adapter.contact_index() - 1), pose).effector;
+                        const AdaptedFrame contact = adapter.step(adapter.contact_index(), pose);
+                        const Eigen::Vector3d root = adapter.positions()[chain.root];
+                        const Eigen::Vector3d arriving = contact.effector - before;
+                        towards_body[ramp == OffsetRamp::time] += arriving.norm() > 0.01 && arriving.dot(contact.effector - root) < 0.0;
+                    }
+                }
+            }
+        }
+    }
+    INFO("arriving towards the body: progress " << towards_body[0] << ", time " << towards_body[1] << " of " << strikes);
+    CHECK(towards_body[1] > 0);                 // the time ramp shows the loop on these targets
+    CHECK(towards_body[0] < towards_body[1]);    // the progress ramp less often
+    CHECK(towards_body[0] <= strikes / 10);
+}
