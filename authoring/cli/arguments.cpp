@@ -92,6 +92,10 @@ std::string usage_text(const CommandSpec& spec) {
 FlagSpec unit_flag() {
     return {"unit", "auto|m|cm|mm|in|cmu", "length unit of the file (default auto: detected from the skeleton's height)"};
 }
+FlagSpec strict_flag() {
+    return {"strict", "", "refuse captures that other readers accept with a warning (an 'End name' block, frames not one per line,\n"
+                          "values after the declared frames)"};
+}
 FlagSpec mocap_root_flag() {
     return {"mocap-root", "DIR", "where relative capture paths are also looked up (default data/mocap)"};
 }

@@ -52,6 +52,7 @@ std::string usage_text(const CommandSpec& spec);
 
 // Flags every capture-reading command shares.
 FlagSpec unit_flag();
+FlagSpec strict_flag(); // --strict: refuse a capture that reads only with warnings
 FlagSpec mocap_root_flag();
 FlagSpec body_map_flag();
 FlagSpec json_flag();

@@ -18,6 +18,7 @@ Result<CaptureOptions> capture_options_from(const Arguments& arguments) {
     const std::optional<std::string> root = arguments.value("mocap-root");
     options.mocap_root = root ? std::filesystem::path(*root) : default_mocap_root();
     if (const std::optional<std::string> body_map = arguments.value("body-map")) options.body_map_file = *body_map;
+    options.read.strict = arguments.has("strict");
     return options;
 }
 
@@ -30,7 +31,11 @@ std::filesystem::path resolve_capture_path(const std::filesystem::path& path, co
 }
 
 Result<BvhFile> load_capture(const std::filesystem::path& given_path, const CaptureOptions& options) {
-    return capture_read_file(resolve_capture_path(given_path, options.mocap_root), options.read, options.body_map_file);
+    Result<BvhFile> file = capture_read_file(resolve_capture_path(given_path, options.mocap_root), options.read, options.body_map_file);
+    if (file) {
+        for (const std::string& warning : file->warnings) std::cerr << "warning: " << warning << "\n";
+    }
+    return file;
 }
 
 std::filesystem::path default_mocap_root() { return locate_data_folder("KUMITE_MOCAP_ROOT", "data/mocap"); }

@@ -26,6 +26,7 @@ Result<CaptureOptions> capture_options_from(const Arguments& arguments);
 std::filesystem::path resolve_capture_path(const std::filesystem::path& path, const std::filesystem::path& mocap_root);
 
 // Reads the capture and applies --body-map, or the sidecar FILE.bodymap.json when there is one.
+// The file's warnings (what it tolerated) go to stderr, one "warning: file:line: ..." line each.
 Result<BvhFile> load_capture(const std::filesystem::path& path, const CaptureOptions& options);
 
 // $KUMITE_MOCAP_ROOT, else data/mocap (see locate_data_folder).

@@ -44,6 +44,7 @@ nlohmann::json inspect_json(const BvhFile& file, const std::filesystem::path& pa
         if (!file.body_map.part_of(joint)) unmapped.push_back(clip.skeleton.names[joint]);
     }
     document["unmapped"] = unmapped;
+    document["warnings"] = file.warnings;
     return document;
 }
 
@@ -74,7 +75,7 @@ const CommandSpec& inspect_spec() {
         "Reads a BVH capture and describes it: joints, frames, frame rate, length unit, standing height,\n"
         "rotation orders and the body map (which joint plays each body part).",
         1, 1,
-        {unit_flag(), mocap_root_flag(), body_map_flag(), json_flag()}};
+        {unit_flag(), strict_flag(), mocap_root_flag(), body_map_flag(), json_flag()}};
     return spec;
 }
 

@@ -22,7 +22,7 @@ const CommandSpec& retarget_spec() {
         {{"character", "NAME", "target character (see kumite characters)"},
          {"output", "OUT.bvh", "where to write the retargeted capture (also -o)"},
          {"report", "OUT.json", "write the quality report as JSON"},
-         unit_flag(), mocap_root_flag(), body_map_flag(), characters_dir_flag(), json_flag()}};
+         unit_flag(), strict_flag(), mocap_root_flag(), body_map_flag(), characters_dir_flag(), json_flag()}};
     return spec;
 }
 

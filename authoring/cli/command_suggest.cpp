@@ -21,7 +21,7 @@ const CommandSpec& suggest_spec() {
         1, 100000,
         {{"segment", "PART", "a body part (hand_l, foot_r, head, ...): report its extension peaks"},
          {"write-annotations", "OUT.json", "write every suggestion as a clip of an annotation file ready for bake"},
-         unit_flag(), mocap_root_flag(), body_map_flag(), json_flag()}};
+         unit_flag(), strict_flag(), mocap_root_flag(), body_map_flag(), json_flag()}};
     return spec;
 }
 

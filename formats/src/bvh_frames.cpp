@@ -73,7 +73,47 @@ struct FrameDecoder {
         return std::string(source) + ":" + std::to_string(cursor.line()) + ": ";
     }
     Result<void> parse_range(TextCursor& cursor, std::size_t first_frame, std::size_t end_frame, Clip& clip) const;
+    // All frames as one stream of values, whatever the line ends; `first_off_line` gets the line of the first
+    // frame that does not start and end a line of its own (0 when all do).
+    Result<void> parse_stream(TextCursor& cursor, Clip& clip, int& first_off_line) const;
+    void store(const double* values, std::size_t frame, Clip& clip) const;
 };
+
+void FrameDecoder::store(const double* values, std::size_t frame, Clip& clip) const {
+    const int joints = skeleton.joint_count();
+    const std::size_t first = frame * joints;
+    for (int joint = 0; joint < joints; ++joint) {
+        clip.local_rotations[first + joint] = rotation_from_degrees(values, slots[joint]);
+        if (animated_translations) clip.local_translations[first + joint] = translation_from_values(values, slots[joint], skeleton.rest_offsets[joint]);
+    }
+    clip.root_translations[frame] = translation_from_values(values, slots[0], skeleton.rest_offsets[0]);
+}
+
+Result<void> FrameDecoder::parse_stream(TextCursor& cursor, Clip& clip, int& first_off_line) const {
+    std::vector<double> values(values_per_frame);
+    first_off_line = 0;
+    for (std::size_t frame = 0; frame < frames; ++frame) {
+        // A frame on a line of its own starts after a line end (or the header's) and ends at one.
+        const bool starts_line = cursor.at_line_end();
+        for (int i = 0; i < values_per_frame; ++i) {
+            cursor.skip_whitespace();
+            if (cursor.at_end()) {
+                return make_error(ErrorCode::parse, where(cursor) + "the file ends after " + std::to_string(frame) + " frames and " +
+                                                        std::to_string(i) + " values, but 'Frames:' declares " + std::to_string(frames) +
+                                                        " frames of " + std::to_string(values_per_frame) + " values");
+            }
+            if (i == 0 && first_off_line == 0 && !starts_line) first_off_line = cursor.line();
+            if (!cursor.parse_number(values[i])) {
+                return make_error(ErrorCode::parse, where(cursor) + "frame " + std::to_string(frame) + ", value " + std::to_string(i + 1) +
+                                                        ": expected a finite number, found " + cursor.peek_for_message());
+            }
+        }
+        cursor.skip_blanks();
+        if (first_off_line == 0 && !cursor.at_line_end()) first_off_line = cursor.line();
+        store(values.data(), frame, clip);
+    }
+    return {};
+}
 
 // Parses frames [first_frame, end_frame), one per non-blank line, into the clip's preallocated arrays.
 Result<void> FrameDecoder::parse_range(TextCursor& cursor, std::size_t first_frame, std::size_t end_frame, Clip& clip) const {
@@ -102,15 +142,7 @@ Result<void> FrameDecoder::parse_range(TextCursor& cursor, std::size_t first_fra
                                                     std::to_string(joints) + " joints), found " + cursor.peek_for_message());
         }
 
-        const std::size_t first = frame * joints;
-        for (int joint = 0; joint < joints; ++joint) {
-            clip.local_rotations[first + joint] = rotation_from_degrees(values.data(), slots[joint]);
-            if (animated_translations) {
-                clip.local_translations[first + joint] =
-                    translation_from_values(values.data(), slots[joint], skeleton.rest_offsets[joint]);
-            }
-        }
-        clip.root_translations[frame] = translation_from_values(values.data(), slots[0], skeleton.rest_offsets[0]);
+        store(values.data(), frame, clip);
     }
     return {};
 }
@@ -140,9 +172,30 @@ std::optional<FrameSplit> find_frame_split(const TextCursor& cursor, std::size_t
     return split;
 }
 
+// The values after the declared frames, up to the end of the text; an error at the first thing that is not one.
+Result<std::size_t> count_trailing_values(TextCursor& cursor, const FrameDecoder& decoder, std::size_t frames) {
+    std::size_t trailing = 0;
+    double value = 0.0;
+    for (cursor.skip_whitespace(); !cursor.at_end(); cursor.skip_whitespace()) {
+        if (!cursor.parse_number(value)) {
+            return make_error(ErrorCode::parse, decoder.where(cursor) + "more data after the " + std::to_string(frames) +
+                                                    " frames that 'Frames:' declares, found " + cursor.peek_for_message());
+        }
+        ++trailing;
+    }
+    return trailing;
+}
+
+std::string trailing_message(std::size_t trailing, std::size_t per_frame, std::size_t frames) {
+    const std::size_t whole = trailing / per_frame;
+    return std::to_string(trailing) + " values (" + std::to_string(whole) + (whole == 1 ? " frame" : " frames") +
+           (trailing % per_frame ? " and a part" : "") + ") after the " + std::to_string(frames) + " frames that 'Frames:' declares";
+}
+
 } // namespace
 
-Result<void> bvh_parse_frames(TextCursor& cursor, std::string_view source, const RawBvh& raw, Clip& clip, int threads) {
+Result<void> bvh_parse_frames(TextCursor& cursor, std::string_view source, const RawBvh& raw, Clip& clip, int threads, bool strict,
+                              std::vector<std::string>& warnings) {
     const Skeleton& skeleton = raw.skeleton;
     const int joints = skeleton.joint_count();
     FrameDecoder decoder{skeleton, joint_slots(raw.layout), false, raw.layout.channel_count(),
@@ -174,6 +227,8 @@ Result<void> bvh_parse_frames(TextCursor& cursor, std::string_view source, const
     if (decoder.animated_translations) clip.local_translations.resize(frames * joints);
 
     // Large captures are parsed in two halves at once; the halves write disjoint frames of the clip.
+    const TextCursor frames_start = cursor;
+    Result<void> by_line = {};
     std::optional<FrameSplit> split;
     if (threads >= 2 && bytes >= k_bvh_parallel_min_bytes) split = find_frame_split(cursor, frames);
     if (split) {
@@ -183,21 +238,54 @@ Result<void> bvh_parse_frames(TextCursor& cursor, std::string_view source, const
             std::thread second([&] { second_result = decoder.parse_range(second_cursor, split->frame, frames, clip); });
             Result<void> first_result = decoder.parse_range(cursor, 0, split->frame, clip);
             second.join();
-            if (!first_result) return first_result; // the earlier error in file order
-            if (!second_result) return second_result;
-            cursor = second_cursor;
+            // The earlier error in file order.
+            by_line = !first_result ? first_result : second_result;
+            if (by_line) cursor = second_cursor;
         } catch (const std::system_error&) {
             split.reset(); // no thread to be had: parse serially below
         }
     }
-    if (!split) {
-        if (Result<void> parsed = decoder.parse_range(cursor, 0, frames, clip); !parsed) return parsed;
+    if (!split) by_line = decoder.parse_range(cursor, 0, frames, clip);
+    const std::size_t per_frame = std::size_t(std::max(1, values_per_frame));
+    if (!by_line) {
+        // Frames not one per line: read the values as one stream, as other readers do. It stands only when the
+        // values then make whole frames (a channel count that does not match the data would leave a part
+        // over); otherwise the line-by-line error says best what is wrong.
+        if (strict) return by_line;
+        auto also = [&](const std::string& stream_message) {
+            std::string what = stream_message;
+            if (what.starts_with(source)) what = what.substr(what.find(' ') + 1); // "file:line: " once is enough
+            return make_error(by_line.error().code, by_line.error().message + "; read as one stream of values instead: " + what);
+        };
+        cursor = frames_start;
+        int off_line = 0;
+        if (Result<void> streamed = decoder.parse_stream(cursor, clip, off_line); !streamed) return also(streamed.error().message);
+        const int trailing_line = (cursor.skip_whitespace(), cursor.line());
+        Result<std::size_t> trailing = count_trailing_values(cursor, decoder, frames);
+        if (!trailing) return also(trailing.error().message);
+        if (*trailing % per_frame != 0) {
+            return also(std::to_string(*trailing) + " values are left after " + std::to_string(frames) + " frames, not a whole frame");
+        }
+        warnings.push_back(std::string(source) + ":" + std::to_string(off_line > 0 ? off_line : frames_start.line()) +
+                           ": frames are not one per line; the values are read as one stream, " + std::to_string(values_per_frame) +
+                           " to a frame (" + std::to_string(frames) + " frames)");
+        if (*trailing > 0) warnings.push_back(std::string(source) + ":" + std::to_string(trailing_line) + ": " + trailing_message(*trailing, per_frame, frames) + ": ignored");
+        return {};
     }
+    // Whole frames of values after the declared frames are ignored (with a warning); anything else is refused.
     cursor.skip_whitespace();
-    if (!cursor.at_end()) {
-        return make_error(ErrorCode::parse, decoder.where(cursor) + "more data after the " + std::to_string(frames) +
-                                                " frames that 'Frames:' declares, found " + cursor.peek_for_message());
+    const int trailing_line = cursor.line();
+    const TextCursor after_frames = cursor;
+    Result<std::size_t> trailing = count_trailing_values(cursor, decoder, frames);
+    if (!trailing) return trailing.error();
+    if (*trailing == 0) return {};
+    if (*trailing % per_frame != 0 || strict) {
+        TextCursor at = after_frames;
+        return make_error(ErrorCode::parse, decoder.where(at) + "more data after the " + std::to_string(frames) + " frames that 'Frames:' declares, found " +
+                                                at.peek_for_message() + " (" + trailing_message(*trailing, per_frame, frames) + ")" +
+                                                (strict ? " (refused: strict)" : ""));
     }
+    warnings.push_back(std::string(source) + ":" + std::to_string(trailing_line) + ": " + trailing_message(*trailing, per_frame, frames) + ": ignored");
     return {};
 }
 

@@ -35,7 +35,8 @@ std::optional<BvhChannel> channel_from_name(std::string_view name) {
 
 class HierarchyParser {
 public:
-    HierarchyParser(TextCursor& cursor, std::string_view source) : m_cursor(cursor), m_source(source) {}
+    HierarchyParser(TextCursor& cursor, std::string_view source, bool strict, std::vector<std::string>& warnings)
+        : m_cursor(cursor), m_source(source), m_strict(strict), m_warnings(warnings) {}
 
     Result<void> parse(RawBvh& raw);
 
@@ -49,6 +50,8 @@ private:
 
     TextCursor& m_cursor;
     std::string_view m_source;
+    bool m_strict = false;
+    std::vector<std::string>& m_warnings;
     std::vector<int> m_open_joints; // joints whose '}' is still expected
     std::vector<bool> m_has_offset;
 };
@@ -146,8 +149,17 @@ Result<void> HierarchyParser::parse(RawBvh& raw) {
         } else if (equals_ignore_case(token, "JOINT")) {
             if (Result<void> opened = open_joint(raw, joint); !opened) return opened;
         } else if (equals_ignore_case(token, "End")) {
+            const int end_line = m_cursor.line();
             const std::string_view site = m_cursor.next_token();
-            if (!equals_ignore_case(site, "Site")) return fail("expected 'Site' after 'End', found '" + std::string(site) + "'");
+            if (!equals_ignore_case(site, "Site")) {
+                // "End ltoes": some exporters name the End block like a joint. An End block has no channels and
+                // no children, so it is read as the End Site it is.
+                if (site.empty() || site == "{" || site == "}" || m_strict) {
+                    return fail("expected 'Site' after 'End', found '" + std::string(site.substr(0, 24)) + "'" + (m_strict ? " (refused: strict)" : ""));
+                }
+                m_warnings.push_back(std::string(m_source) + ":" + std::to_string(end_line) + ": 'End " + std::string(site.substr(0, 40)) +
+                                     "' read as an End Site of joint " + raw.skeleton.names[joint]);
+            }
             if (m_cursor.next_token() != "{") return fail("expected '{' after End Site");
             if (!equals_ignore_case(m_cursor.next_token(), "OFFSET")) return fail("expected OFFSET in End Site");
             Result<Eigen::Vector3d> offset = parse_offset();
@@ -227,13 +239,15 @@ int BvhLayout::channel_count() const {
 Result<BvhFile> bvh_parse(std::string_view text, std::string_view source_name, const BvhReadOptions& options) {
     TextCursor cursor(text);
     RawBvh raw;
-    HierarchyParser hierarchy(cursor, source_name);
+    BvhFile file;
+    HierarchyParser hierarchy(cursor, source_name, options.strict, file.warnings);
     if (Result<void> parsed = hierarchy.parse(raw); !parsed) return parsed.error();
     if (Result<void> parsed = parse_motion_header(cursor, source_name, raw); !parsed) return parsed.error();
 
-    BvhFile file;
     const int threads = options.threads > 0 ? options.threads : static_cast<int>(std::min(2u, std::thread::hardware_concurrency()));
-    if (Result<void> parsed = bvh_parse_frames(cursor, source_name, raw, file.clip, threads); !parsed) return parsed.error();
+    if (Result<void> parsed = bvh_parse_frames(cursor, source_name, raw, file.clip, threads, options.strict, file.warnings); !parsed) {
+        return parsed.error();
+    }
     file.clip.skeleton = std::move(raw.skeleton);
     file.clip.frame_time_s = raw.frame_time_s;
     file.layout = std::move(raw.layout);

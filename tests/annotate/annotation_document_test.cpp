@@ -9,6 +9,7 @@
 
 #include <QFile>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -230,6 +231,28 @@ TEST_CASE("annotation document: a malformed capture is an issue with file and li
     CHECK(issue.line == 6); // the "}" where the third channel name should be
     CHECK_FALSE(issue.message.isEmpty());
     CHECK(document.current_capture() == nullptr);
+}
+
+TEST_CASE("annotation document: a capture read with a warning opens, the warning in the issues with its line", "[annotate]") {
+    test::qt_application();
+    // A real capture with its End Site renamed the way some exporters write it ("End ltoes").
+    std::ifstream source(test::mocap_root() / "bandai-namco-1/dataset-1_kick_normal_001.bvh", std::ios::binary);
+    if (!source) { WARN("captures absent: skipped"); return; }
+    std::string text((std::istreambuf_iterator<char>(source)), std::istreambuf_iterator<char>());
+    const std::size_t end_site = text.find("End Site");
+    REQUIRE(end_site != std::string::npos);
+    text.replace(end_site, 8, "End ltoes");
+    const int line = 1 + int(std::count(text.begin(), text.begin() + std::ptrdiff_t(end_site), '\n'));
+    const std::filesystem::path file = test::make_temp_dir("annotate-warning") / "renamed_end.bvh";
+    std::ofstream(file, std::ios::binary) << text;
+    AnnotationDocument document(test::mocap_root());
+    REQUIRE(document.open_capture(QString::fromStdString(file.string())));
+    REQUIRE(document.current_capture() != nullptr);
+    REQUIRE(document.issues().size() == 1);
+    CHECK(document.issues()[0].severity == IssueSeverity::warning);
+    CHECK(document.issues()[0].file.endsWith("renamed_end.bvh"));
+    CHECK(document.issues()[0].line == line);
+    CHECK(document.issues()[0].message.contains("End ltoes"));
 }
 
 TEST_CASE("annotation document: an annotation file naming a missing capture opens with an issue", "[annotate]") {

@@ -37,17 +37,25 @@ void AnnotationDocument::load_clip_captures() {
     std::set<std::string> sources;
     for (const RawAnnotatedClip& clip : m_annotations.clips) sources.insert(clip.source);
     for (const std::string& source : sources) {
+        const bool known = m_captures.find(source) != nullptr;
         Result<const LoadedCapture*> loaded = m_captures.load(source);
         if (!loaded) report_error(loaded.error().message, QString::fromStdString(source));
-        else if (!(*loaded)->anatomy) report(issue_from_message((*loaded)->anatomy_error, {}, IssueSeverity::warning));
+        else if (!known) report_capture_warnings(**loaded, {});
     }
     emit captures_changed();
 }
 
+void AnnotationDocument::report_capture_warnings(const LoadedCapture& capture, const QString& fallback_file) {
+    // What the reader tolerated ("file:line: ..."), then a body map too poor for trajectories.
+    for (const std::string& warning : capture.file.warnings) report(issue_from_message(warning, fallback_file, IssueSeverity::warning));
+    if (!capture.anatomy) report(issue_from_message(capture.anatomy_error, fallback_file, IssueSeverity::warning));
+}
+
 Result<void> AnnotationDocument::open_capture(const QString& path) {
+    const bool known = m_captures.find(path.toStdString()) != nullptr;
     Result<const LoadedCapture*> loaded = m_captures.load(path.toStdString());
     if (!loaded) return loaded.error();
-    if (!(*loaded)->anatomy) report(issue_from_message((*loaded)->anatomy_error, path, IssueSeverity::warning));
+    if (!known) report_capture_warnings(**loaded, path);
     emit captures_changed();
     set_current_source((*loaded)->source);
     return {};

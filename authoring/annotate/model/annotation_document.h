@@ -96,6 +96,7 @@ signals:
 
 private:
     void load_clip_captures();
+    void report_capture_warnings(const LoadedCapture& capture, const QString& fallback_file);
 
     RawAnnotations m_annotations;
     QString m_file_path;

@@ -6,6 +6,12 @@
 // line ends, tabs, numbers like ".1", "2." and "1e-05", blank lines, joints without End Site. Errors come back
 // as a Result naming the file and line and what was expected; a hostile file costs at most memory proportional
 // to its size (frame counts are checked against the bytes that follow).
+//
+// Tolerated, as other readers (Blender's) tolerate them, each with a warning "file:line: what" in
+// BvhFile::warnings (refused instead with BvhReadOptions::strict): an End block named like a joint ("End ltoes",
+// read as End Site); frames not one per line (all values on one line, or frames wrapped over lines: the values
+// are read as one stream and cut into frames by the channel count); whole values after the frames 'Frames:'
+// declares (ignored). Still refused: too few values, a truncated hierarchy, a value that is not a number.
 
 #include "kumite/core/body_map.h"
 #include "kumite/core/clip.h"
@@ -44,6 +50,7 @@ struct BvhReadOptions {
     std::optional<LengthUnit> unit;                 // none: detect from the standing height
     std::size_t max_file_bytes = std::size_t(1) << 30;
     int threads = 0; // frame parsing threads for large files: 0 = up to 2 when the machine has them, 1 = serial
+    bool strict = false; // refuse what is otherwise read with a warning (see above)
 };
 
 struct BvhFile {
@@ -53,6 +60,7 @@ struct BvhFile {
     bool unit_detected = true;
     double height_m = 0.0; // standing height after conversion
     BodyMap body_map;      // detected from the joint names
+    std::vector<std::string> warnings; // "file:line: what was tolerated and how it was read", in file order
 };
 
 inline constexpr int k_bvh_max_joints = 10000;
