@@ -70,6 +70,27 @@ TEST_CASE("cli: inspect --json has the contract's keys", "[cli]") {
     CHECK(document["body_map"].is_object());
 }
 
+TEST_CASE("cli: a capture read with warnings says so on stderr and in inspect --json; --strict refuses it", "[cli]") {
+    std::string text = k_small_bvh;
+    text.replace(text.find("End Site"), 8, "End toe");                  // line 10
+    text.replace(text.find("0 90 0 0 0 0 0 0 0\n"), 19, "0 90 0 0 0 0 0 0 0 "); // both frames on line 19
+    const std::string file = write_text("tolerated.bvh", text).string();
+    const auto result = run_command(kumite_exe() + " inspect " + file + " --json --unit cm");
+    REQUIRE(result.status == 0);
+    const nlohmann::json document = nlohmann::json::parse(result.out);
+    REQUIRE(document["warnings"].size() == 2);
+    CHECK(document["warnings"][0].get<std::string>().find("tolerated.bvh:10:") != std::string::npos);
+    CHECK(document["warnings"][1].get<std::string>().find("tolerated.bvh:19:") != std::string::npos);
+    CHECK(document["frames"] == 2);
+    CHECK(result.err.find("warning: ") != std::string::npos);
+    const auto strict = run_command(kumite_exe() + " inspect " + file + " --strict");
+    CHECK(strict.status == 1);
+    CHECK(strict.err.find("tolerated.bvh:10:") != std::string::npos);
+    const auto plain = run_command(kumite_exe() + " inspect " + write_text("small.bvh", k_small_bvh).string() + " --json --strict");
+    CHECK(plain.status == 0);
+    CHECK(nlohmann::json::parse(plain.out)["warnings"].empty());
+}
+
 TEST_CASE("cli: positions --json gives FK positions in metres", "[cli]") {
     const std::string file = write_text("small.bvh", k_small_bvh).string();
     const auto result = run_command(kumite_exe() + " positions " + file + " --frames 0,1 --unit cm --json");
