@@ -19,14 +19,14 @@ namespace kumite::cli {
 const CommandSpec& adapt_spec() {
     static const CommandSpec spec{
         "adapt",
-        "DB.kdb --character NAME --target X,Y,Z --command punch|kick [--side left|right|any] --record OUT.bvh --report OUT.json",
+        "[DB.kdb] --character NAME --target X,Y,Z --command punch|kick [--side left|right|any] --record OUT.bvh --report OUT.json",
         "Plays the strike the retrieval picks for a character standing at the origin (facing +Z, in the guard):\n"
         "a short guard hold, then the clip blended in, decoded onto the character, its hit segment driven onto\n"
         "the target at the clip's annotated hit frame by the constraint ramp (limb IK, then CCD over the trunk when\n"
         "out of reach), stopped at the target after the contact (impact) and recovered along the clip's own\n"
         "retraction, elbows and knees bending as the clip bends them, support feet planted. Writes the motion as\n"
         "BVH on the character's skeleton and a JSON report.",
-        1, 1,
+        0, 1,
         {{"character", "NAME", "a character of data/characters (see kumite characters)"},
          {"target", "X,Y,Z", "the target, world metres"},
          {"command", "SEMANTICS", "punch, kick, or any strike semantics the database holds"},
@@ -73,7 +73,7 @@ int run_adapt(int argc, char** argv) {
     RetrievalWorkspace workspace = setup.retriever->make_workspace();
     const RetrievalResult retrieved = setup.retriever->query(query, workspace);
     if (!retrieved.found) {
-        return input_error(arguments.positionals[0] + ": no " + *arguments.value("command") + " with side " + side_name(query.side) +
+        return input_error(setup.database_path + ": no " + *arguments.value("command") + " with side " + side_name(query.side) +
                            " can start from the guard");
     }
 

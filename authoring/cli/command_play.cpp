@@ -4,6 +4,7 @@
 
 #include "capture_loading.h"
 #include "character_catalog.h"
+#include "default_database.h"
 #include "commands.h"
 
 #include "kumite/core/forward_kinematics.h"
@@ -25,7 +26,7 @@ namespace kumite::cli {
 const CommandSpec& play_spec() {
     static const CommandSpec spec{
         "play",
-        "DB.kdb [--character NAME] [--fighters N] [--tracker dtrack:PORT[:BODY] | replay:FILE | simulate:still|wander|dodge|FILE] "
+        "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:BODY] | replay:FILE | simulate:still|wander|dodge|FILE] "
         "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] [--record OUT.bvh] "
         "[--events OUT.jsonl] [--report OUT.json]",
         "Runs the fighter at 60 Hz against the user's head (a DTrack system, a replayed CSV of t,x,y,z, or a\n"
@@ -33,8 +34,9 @@ const CommandSpec& play_spec() {
         "character NAME, quit (in a script file, each line starts with its time in seconds; on stdin or TCP on\n"
         "127.0.0.1 they apply when they arrive). Headless runs use a simulated clock unless --realtime or the\n"
         "tracker is live. With a display and without --headless the viewer opens (keys listed on screen; it runs until\n"
-        "closed, or for --duration when given).",
-        1, 1,
+        "closed, or for --duration when given). Without DB.kdb: $KUMITE_DB, else the reference annotations baked once\n"
+        "and cached (baked again when they or their captures change).",
+        0, 1,
         {{"character", "NAME", "the starting character (default: the first of data/characters)"},
          {"fighters", "N", "fighters side by side against the same user (default 1)"},
          {"tracker", "SOURCE", "dtrack:PORT[:BODY], replay:FILE.csv, or simulate:still|wander|dodge|FILE (a user script; default simulate:still)"},
@@ -203,7 +205,15 @@ int run_play(int argc, char** argv) {
     }
 
     // The database and every character (any of them can be switched to).
-    Result<MotionDatabase> database = MotionDatabase::open(arguments.positionals[0]);
+    std::filesystem::path database_path;
+    if (arguments.positionals.empty()) {
+        Result<std::filesystem::path> found = default_database_path();
+        if (!found) return input_error(found.error().message);
+        database_path = *found;
+    } else {
+        database_path = arguments.positionals[0];
+    }
+    Result<MotionDatabase> database = MotionDatabase::open(database_path);
     if (!database) return input_error(database.error().message);
     const std::optional<std::string> folder = arguments.value("characters-dir");
     const std::filesystem::path characters_dir = folder ? std::filesystem::path(*folder) : default_characters_dir();

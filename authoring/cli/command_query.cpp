@@ -16,11 +16,11 @@ namespace kumite::cli {
 const CommandSpec& query_spec() {
     static const CommandSpec spec{
         "query",
-        "DB.kdb --character NAME (--target X,Y,Z | --targets FILE.csv) --command SEMANTICS [--side left|right|any] [--exhaustive] [--json]",
+        "[DB.kdb] --character NAME (--target X,Y,Z | --targets FILE.csv) --command SEMANTICS [--side left|right|any] [--exhaustive] [--json]",
         "Retrieves the strike clip and start pose that suit a character standing at the origin, facing +Z, in\n"
         "the database's guard pose, and a target in world metres (Y up). Clusters are searched nearest first with\n"
         "exact bounds; --exhaustive scores every start of every clip instead (the slow reference).",
-        1, 1,
+        0, 1,
         {{"character", "NAME", "a character of data/characters (see kumite characters)"},
          {"target", "X,Y,Z", "the target, world metres"},
          {"targets", "FILE.csv", "one x,y,z per line ('#' comments); prints a list of results"},
@@ -109,7 +109,7 @@ int run_query(int argc, char** argv) {
         const RetrievalResult result = exhaustive ? retriever.query_exhaustive(query) : retriever.query(query, workspace);
         const double latency_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started).count();
         if (!result.found) {
-            return input_error(arguments.positionals[0] + ": no " + *arguments.value("command") + " with side " +
+            return input_error(setup.database_path + ": no " + *arguments.value("command") + " with side " +
                                side_name(query.side) + " has a start far enough before its hit");
         }
         results.push_back(result_json(retriever, result, latency_us));

@@ -2,6 +2,7 @@
 
 #include "capture_loading.h"
 #include "character_catalog.h"
+#include "default_database.h"
 
 #include <cstdio>
 
@@ -41,7 +42,15 @@ std::optional<int> fighter_setup(FighterSetup& setup, const CommandSpec& spec, c
     if (!character) return usage_error(spec, character.error().message);
     setup.character = std::move(*character);
 
-    const std::string& path = arguments.positionals[0];
+    std::filesystem::path path;
+    if (arguments.positionals.empty()) {
+        Result<std::filesystem::path> found = default_database_path();
+        if (!found) return input_error(found.error().message);
+        path = *found;
+    } else {
+        path = arguments.positionals[0];
+    }
+    setup.database_path = path.string();
     Result<MotionDatabase> database = MotionDatabase::open(path);
     if (!database) return input_error(database.error().message);
     setup.database = std::move(*database);
@@ -58,7 +67,7 @@ std::optional<int> fighter_setup(FighterSetup& setup, const CommandSpec& spec, c
             const std::string name(db.string(clip.semantics));
             if (db_clip_is_strike(clip) && known.find(name) == std::string::npos) known += (known.empty() ? "" : ", ") + name;
         }
-        return input_error(path + ": no '" + *command + "' strikes in this database (it has: " + known + ")");
+        return input_error(setup.database_path + ": no '" + *command + "' strikes in this database (it has: " + known + ")");
     }
     setup.rig = std::make_unique<CharacterRig>(setup.character.clip.skeleton, setup.anatomy);
     setup.rig->stand_at_origin(setup.standing, db);

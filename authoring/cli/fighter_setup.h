@@ -14,6 +14,7 @@
 namespace kumite::cli {
 
 struct FighterSetup {
+    std::string database_path;  // as given, or the default (default_database.h)
     MotionDatabase database;
     BvhFile character;
     RestAnatomy anatomy;
@@ -24,7 +25,7 @@ struct FighterSetup {
     RetrievalQuery query;                            // everything but the target
 };
 
-// Reads DB (positional 0), --character, --command, --side, --scaling. Returns the exit status on failure
+// Reads DB (positional 0, or the default database when absent), --character, --command, --side, --scaling. Returns the exit status on failure
 // (after printing why): 2 for usage errors, 1 for bad input.
 std::optional<int> fighter_setup(FighterSetup& setup, const CommandSpec& spec, const Arguments& arguments);
 

@@ -98,7 +98,7 @@ TEST_CASE("adaptation: a reachable target is met at the contact frame by the lim
     }
 }
 
-TEST_CASE("adaptation: beyond the arm the trunk leans within its limits; far away it stops at the closest point", "[adaptation]") {
+TEST_CASE("adaptation: beyond the arm the trunk leans within its limits, far away it stops at the closest point", "[adaptation]") {
     const Scene scene("brawler");
     StrikeAdapter adapter(scene.rig(), scene.database.view());
     const AdaptationSettings limits;

@@ -70,7 +70,7 @@ TEST_CASE("cli: inspect --json has the contract's keys", "[cli]") {
     CHECK(document["body_map"].is_object());
 }
 
-TEST_CASE("cli: a capture read with warnings says so on stderr and in inspect --json; --strict refuses it", "[cli]") {
+TEST_CASE("cli: a capture read with warnings says so on stderr and in inspect --json, --strict refuses it", "[cli]") {
     std::string text = k_small_bvh;
     text.replace(text.find("End Site"), 8, "End toe");                  // line 10
     text.replace(text.find("0 90 0 0 0 0 0 0 0\n"), 19, "0 90 0 0 0 0 0 0 0 "); // both frames on line 19
@@ -417,6 +417,33 @@ TEST_CASE("cli: adapt writes a BVH on the character and a report with the contra
 
     CHECK(run_command(kumite_exe() + " adapt " + db + " --character runner --command kick --record " + bvh).status == 2); // no target
     CHECK(run_command(kumite_exe() + " adapt " + db + " --character runner --target 0,1,1 --command kick").status == 2); // no record
+}
+
+TEST_CASE("cli: play query and adapt with no database bake the reference one once, or say how to get captures", "[cli][corpus]") {
+    if (!std::filesystem::exists(kumite::test::mocap_root() / "bandai-namco-1")) return;
+    const std::filesystem::path cache = kumite::test::make_temp_dir("cli-default-db");
+    const std::string environment = "KUMITE_CACHE_DIR=" + cache.string() + " KUMITE_MOCAP_ROOT=" + kumite::test::mocap_root().string() + " ";
+    const auto first = run_command(environment + kumite_exe() + " play --headless --duration 2");
+    INFO(first.err);
+    REQUIRE(first.status == 0);
+    CHECK(first.err.find("baked") != std::string::npos); // says it baked, once
+    const auto again = run_command(environment + kumite_exe() + " query --character scout --target 0,1.2,0.6 --command punch --json");
+    REQUIRE(again.status == 0);
+    CHECK(again.err.find("baked") == std::string::npos); // the cached one
+    CHECK(nlohmann::json::parse(again.out).contains("clip"));
+    int cached = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(cache)) cached += entry.path().extension() == ".kdb";
+    CHECK(cached == 1);
+    // No captures: a message that says what to do, exit 1.
+    const auto none = run_command("KUMITE_CACHE_DIR=" + cache.string() + " KUMITE_MOCAP_ROOT=" + (cache / "nothing").string() + " " + kumite_exe() +
+                                  " adapt --character kid --target 0,1,0.5 --command kick --record " + (cache / "x.bvh").string());
+    CHECK(none.status == 1);
+    CHECK(none.err.find("fetch_mocap.sh") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(cache / "x.bvh"));
+    // $KUMITE_DB names the database to use.
+    const auto named = run_command("KUMITE_DB=" + (cache / "absent.kdb").string() + " " + kumite_exe() + " play --headless --duration 1");
+    CHECK(named.status == 1);
+    CHECK(named.err.find("absent.kdb") != std::string::npos);
 }
 
 TEST_CASE("cli: play runs a headless bout: report keys, events, a recording, the same events twice", "[cli][corpus]") {

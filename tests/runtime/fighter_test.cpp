@@ -189,7 +189,7 @@ TEST_CASE("fighter: approach, strike, ignored orders, recovery and rest", "[runt
     CHECK(strike->side == Side::left);
 }
 
-TEST_CASE("fighter: a silent tracker makes it hold, then rest; the head coming back resumes", "[runtime][corpus]") {
+TEST_CASE("fighter: a silent tracker makes it hold, then rest, the head coming back resumes", "[runtime][corpus]") {
     const MotionDatabaseContent* content = reference_database();
     if (!content) return;
     Bout b(content->view());
@@ -239,7 +239,7 @@ TEST_CASE("fighter: an order refused while another waits leaves the waiting one 
     CHECK(strike->side == Side::right);
 }
 
-TEST_CASE("fighter: a strike the head waits for stops at it; one the head leaves follows through", "[runtime][corpus]") {
+TEST_CASE("fighter: a strike the head waits for stops at it, one the head leaves follows through", "[runtime][corpus]") {
     const MotionDatabaseContent* content = reference_database();
     if (!content) return;
     for (const char* semantics : {"kick", "punch"}) {
