@@ -39,7 +39,8 @@ const CommandSpec& play_spec() {
         0, 1,
         {{"character", "NAME", "the starting character (default: the first of data/characters)"},
          {"fighters", "N", "fighters side by side against the same user (default 1)"},
-         {"tracker", "SOURCE", "dtrack:PORT[:BODY], replay:FILE.csv, or simulate:still|wander|dodge|FILE (a user script; default simulate:still)"},
+         {"tracker", "SOURCE", "dtrack:PORT[:BODY] (no BODY: the only 6d body, else the 3d markers' centroid), replay:FILE.csv, or\n"
+                              "simulate:still|wander|dodge|FILE (a user script; default simulate:still)"},
          {"tracker-config", "FILE.json", "the room: bind address, room-to-world transform, room bounds (dtrack)"},
          {"commands", "SOURCE", "stdin, tcp:PORT (127.0.0.1) or script:FILE ('<time_s> <command>' per line)"},
          {"headless", "", "no window"},

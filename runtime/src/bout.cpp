@@ -123,6 +123,10 @@ void Bout::step(double t_s) {
     m_now_s = t_s;
     m_events.clear();
     const Eigen::Vector3d* head = m_tracker->head(t_s);
+    if (const char* notice = m_tracker->take_notice()) {
+        if (m_stream) m_stream->reply(notice);
+        else if (m_message) m_message(notice);
+    }
     m_have_head = head != nullptr;
     if (head) m_head = *head;
     if (m_has_script) m_script.due(t_s, [&](const CommandScript::Line& line) { apply(line.command, "line " + std::to_string(line.line) + ": "); });

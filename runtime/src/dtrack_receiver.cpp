@@ -1,5 +1,7 @@
 #include "kumite/runtime/dtrack_receiver.h"
 
+#include <cstdio>
+
 #include <nlohmann/json.hpp>
 
 #include <arpa/inet.h>
@@ -89,8 +91,26 @@ DtrackReceiver::~DtrackReceiver() {
 
 bool DtrackReceiver::head_of(const DtrackFrame& frame, Eigen::Vector3d& world) {
     Eigen::Vector3d room_mm;
-    if (m_config.head_body >= 0) {
-        const DtrackBody* body = frame.body(m_config.head_body);
+    // The head body: the one chosen, or with none chosen the only one in the frame.
+    const DtrackBody* body = m_config.head_body >= 0 ? frame.body(m_config.head_body) : frame.body_count == 1 ? &frame.bodies[0] : nullptr;
+    if (m_config.head_body < 0 && frame.body_count > 1) {
+        ++m_stats.ambiguous;
+        m_last_rejection = "several 6d bodies and none chosen as the head";
+        if (!m_ambiguity_told) {
+            m_ambiguity_told = m_notice_pending = true;
+            int written = std::snprintf(m_notice.data(), m_notice.size(), "the DTrack stream has %d 6d bodies (ids", frame.body_count);
+            for (int i = 0; i < frame.body_count && written > 0 && written < int(m_notice.size()) - 120; ++i) {
+                written += std::snprintf(m_notice.data() + written, m_notice.size() - std::size_t(written), "%s %d", i ? "," : "", frame.bodies[i].id);
+            }
+            if (written > 0 && written < int(m_notice.size())) {
+                std::snprintf(m_notice.data() + written, m_notice.size() - std::size_t(written),
+                              ") and no head body is chosen: pick the glasses with --tracker dtrack:%d:ID (or \"head_body\" in "
+                              "--tracker-config)\n", m_port);
+            }
+        }
+        return false;
+    }
+    if (m_config.head_body >= 0 || body) {
         if (!body || !body->tracked()) {
             ++m_stats.untracked;
             m_last_rejection = "the head body is missing or not tracked";
@@ -100,7 +120,7 @@ bool DtrackReceiver::head_of(const DtrackFrame& frame, Eigen::Vector3d& world) {
     } else {
         if (frame.marker_count == 0) {
             ++m_stats.untracked;
-            m_last_rejection = "no 3d markers";
+            m_last_rejection = "no 6d body and no 3d markers";
             return false;
         }
         room_mm.setZero();
@@ -115,6 +135,12 @@ bool DtrackReceiver::head_of(const DtrackFrame& frame, Eigen::Vector3d& world) {
     }
     world = m_config.room_to_world * room;
     return true;
+}
+
+const char* DtrackReceiver::take_notice() {
+    if (!m_notice_pending) return nullptr;
+    m_notice_pending = false;
+    return m_notice.data();
 }
 
 bool DtrackReceiver::poll(HeadSample& head, double now_s) {

@@ -168,3 +168,42 @@ TEST_CASE("dtrack: the tracker configuration file is read and checked", "[runtim
     wrong.bind_address = "not-an-address";
     CHECK_FALSE(DtrackReceiver::open(wrong).has_value());
 }
+
+TEST_CASE("dtrack: with no head body chosen the lone 6d body is followed, markers alone give their centroid, several bodies are named once", "[runtime]") {
+    DtrackConfig config;
+    config.port = 0;
+    config.head_body = -1; // as `--tracker dtrack:PORT` without a body
+    Result<std::unique_ptr<DtrackReceiver>> opened = DtrackReceiver::open(config);
+    REQUIRE(opened.has_value());
+    DtrackReceiver& receiver = **opened;
+    Sender sender(receiver.port());
+    HeadSample head;
+
+    // A lone 6d body (id 7, not 1) with no 3d markers: it is the head.
+    sender.send("fr 1\n6d 1 [7 1.0][250 1650 -300 0 0 0][1 0 0 0 1 0 0 0 1]\n");
+    REQUIRE(poll_for(receiver, head, 1));
+    CHECK(receiver.stats().accepted == 1);
+    CHECK(head.position_world.isApprox(Eigen::Vector3d(0.25, 1.65, -0.3), 1e-9));
+    CHECK(receiver.take_notice() == nullptr);
+    // Only 3d markers: their centroid.
+    sender.send("fr 2\n6d 0\n3d 2 [1 1.0][0 1600 0] [2 1.0][200 1700 0]\n");
+    REQUIRE(poll_for(receiver, head, 2));
+    CHECK(receiver.stats().accepted == 2);
+    CHECK(head.position_world.isApprox(Eigen::Vector3d(0.1, 1.65, 0.0), 1e-9));
+    // The lone body untracked: no head this frame.
+    sender.send("fr 3\n6d 1 [7 -1.0][0 0 0 0 0 0][1 0 0 0 1 0 0 0 1]\n");
+    REQUIRE(poll_for(receiver, head, 3));
+    CHECK(receiver.stats().untracked == 1);
+    // Two bodies and none chosen: refused, and the supervisor told once which ones there are.
+    sender.send("fr 4\n6d 2 [3 1.0][0 1600 0 0 0 0][1 0 0 0 1 0 0 0 1] [5 1.0][0 1000 0 0 0 0][1 0 0 0 1 0 0 0 1]\n");
+    sender.send("fr 5\n6d 2 [3 1.0][0 1600 0 0 0 0][1 0 0 0 1 0 0 0 1] [5 1.0][0 1000 0 0 0 0][1 0 0 0 1 0 0 0 1]\n");
+    REQUIRE(poll_for(receiver, head, 5));
+    CHECK(receiver.stats().ambiguous == 2);
+    CHECK(receiver.stats().accepted == 2);
+    const char* notice = receiver.take_notice();
+    REQUIRE(notice != nullptr);
+    const std::string told(notice);
+    CHECK(told.find("ids 3, 5") != std::string::npos);
+    CHECK(told.find("dtrack:" + std::to_string(receiver.port()) + ":ID") != std::string::npos);
+    CHECK(receiver.take_notice() == nullptr); // once
+}

@@ -5,6 +5,10 @@
 // the newest accepted (reordering), heads outside the room, untracked bodies — and bursts (several datagrams in
 // one frame, of which only the newest is used). Positions go from the tracker's room frame (millimetres) to world
 // metres through a configurable transform. The socket binds to loopback unless told otherwise.
+//
+// With no head body chosen the head is the only 6d body of the stream when there is exactly one, else the
+// centroid of the 3d markers when there are markers and no body; with several bodies the frame is refused as
+// ambiguous and take_notice() says once which bodies are there and how to pick one.
 
 #include "kumite/core/result.h"
 #include "kumite/runtime/dtrack.h"
@@ -19,7 +23,7 @@ namespace kumite {
 struct DtrackConfig {
     std::string bind_address = "127.0.0.1";
     int port = 5000;                       // 0: any free port (tests)
-    int head_body = -1;                    // 6d body id of the glasses; -1: the centroid of the 3d markers
+    int head_body = -1;                    // 6d body id of the glasses; -1: none chosen (see head_of below)
     Eigen::Affine3d room_to_world = Eigen::Affine3d::Identity(); // metres -> metres
     Eigen::Vector3d room_min = Eigen::Vector3d(-2.0, 0.0, -2.0); // a head outside this box (room frame, metres)
     Eigen::Vector3d room_max = Eigen::Vector3d(2.0, 2.6, 2.0);   // is rejected
@@ -42,8 +46,9 @@ struct TrackerStats {
     std::uint64_t reordered = 0;
     std::uint64_t out_of_room = 0;
     std::uint64_t untracked = 0;       // the head body missing or quality < 0, or no markers
+    std::uint64_t ambiguous = 0;       // no head body chosen and several 6d bodies in the frame
     std::uint64_t bursts = 0;          // polls that found more than one datagram
-    std::uint64_t rejected() const { return malformed + reordered + out_of_room + untracked; }
+    std::uint64_t rejected() const { return malformed + reordered + out_of_room + untracked + ambiguous; }
 };
 
 class DtrackReceiver {
@@ -58,6 +63,8 @@ public:
     const TrackerStats& stats() const { return m_stats; }
     int port() const { return m_port; } // the bound port
     const char* last_rejection() const { return m_last_rejection; }
+    // A message for the supervisor, once (then null): several 6d bodies and none chosen as the head.
+    const char* take_notice();
 
 private:
     explicit DtrackReceiver(const DtrackConfig& config) : m_config(config) {}
@@ -72,6 +79,9 @@ private:
     std::uint64_t m_last_frame = 0;
     const char* m_last_rejection = "";
     std::array<char, 65536> m_buffer{};
+    std::array<char, 512> m_notice{};
+    bool m_notice_pending = false;
+    bool m_ambiguity_told = false;
     DtrackFrame m_frame;
 };
 

@@ -28,6 +28,8 @@ public:
     bool live() const { return m_receiver != nullptr; } // steps on the wall clock
     long long packets() const { return m_receiver ? m_receiver->stats().packets : 0; }
     long long rejected() const { return m_receiver ? m_receiver->stats().rejected() : 0; }
+    // A message for the supervisor, once (then null): see DtrackReceiver::take_notice.
+    const char* take_notice() { return m_receiver ? m_receiver->take_notice() : nullptr; }
 
 private:
     HeadTracker() = default;
