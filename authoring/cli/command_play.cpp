@@ -59,20 +59,13 @@ const CommandSpec& play_spec() {
 
 namespace {
 
-nlohmann::json summary_of(std::vector<double> values) {
-    if (values.empty()) return {{"mean", 0.0}, {"p99", 0.0}, {"max", 0.0}};
-    std::sort(values.begin(), values.end());
-    double sum = 0.0;
-    for (double v : values) sum += v;
-    return {{"mean", sum / values.size()}, {"p99", values[std::min(values.size() - 1, values.size() * 99 / 100)]}, {"max", values.back()}};
+nlohmann::json summary_of(const ValueHistogram& values) {
+    return {{"mean", values.mean()}, {"p99", values.quantile(0.99)}, {"max", values.max()}};
 }
 
 // Median, p95 and max (the strike figures of issue 13's reports).
-nlohmann::json quantiles_of(std::vector<double> values) {
-    if (values.empty()) return {{"median", 0.0}, {"p95", 0.0}, {"max", 0.0}, {"count", 0}};
-    std::sort(values.begin(), values.end());
-    auto at = [&](double q) { return values[std::min(values.size() - 1, std::size_t(q * double(values.size())))]; };
-    return {{"median", at(0.5)}, {"p95", at(0.95)}, {"max", values.back()}, {"count", values.size()}};
+nlohmann::json quantiles_of(const ValueHistogram& values) {
+    return {{"median", values.quantile(0.5)}, {"p95", values.quantile(0.95)}, {"max", values.max()}, {"count", values.count()}};
 }
 
 const char* side_text(Side side) { return side == Side::left ? "left" : side == Side::right ? "right" : "any"; }
@@ -119,11 +112,7 @@ nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
 
 nlohmann::json play_report_json(const Bout& bout) {
     const BoutCounters& counters = bout.counters();
-    double mean_latency = 0.0, max_latency = 0.0;
-    for (double v : counters.command_to_strike_frames) {
-        mean_latency += v / double(counters.command_to_strike_frames.size());
-        max_latency = std::max(max_latency, v);
-    }
+    const double mean_latency = counters.command_to_strike_frames.mean(), max_latency = counters.command_to_strike_frames.max();
     return {{"frames", counters.frames},
             {"fighters", bout.fighter_count()},
             {"frame_time_us", summary_of(counters.frame_us)},

@@ -182,7 +182,7 @@ private:
     void draw_hud(QPainter& painter, const QRect& rect) {
         const BoutCounters& c = m_bout.counters();
         const Fighter& fighter = m_bout.fighter(0);
-        const double last_us = c.frame_us.empty() ? 0.0 : c.frame_us.back();
+        const double last_us = c.frame_us.last();
         QString lines = QString("%1  |  %2  |  %3 fps  |  frame %4 us  |  %5 fighter(s)\n")
                             .arg(fighter_state_name(fighter.state()))
                             .arg(QString::fromStdString(m_bout.character_name(fighter.character())))

@@ -49,10 +49,6 @@ Result<std::unique_ptr<Bout>> Bout::create(const MotionDatabaseView& database, s
     bout->m_events.reserve(std::size_t(options.fighters) * 64);
     bout->m_order_frame.assign(std::size_t(options.fighters), -1);
     bout->m_queued.reserve(16);
-    bout->m_counters.frame_us.reserve(1 << 16);
-    bout->m_counters.command_to_strike_frames.reserve(1024);
-    bout->m_counters.impact_overshoot_m.reserve(1024);
-    bout->m_counters.contact_speed_mps.reserve(1024);
     if (options.record) {
         const Character& start = *bout->m_characters[options.start_character];
         bout->m_record_decoder = std::make_unique<MirDecoder>(start.file.clip.skeleton, start.anatomy, std::span<const std::string>{});
@@ -147,7 +143,7 @@ void Bout::step(double t_s) {
             case FighterEvent::Type::ignored_order: ++m_counters.ignored_orders; break;
             case FighterEvent::Type::state:
                 if (event.state == FighterState::strike && m_order_frame[f] >= 0) {
-                    m_counters.command_to_strike_frames.push_back(double(frame - m_order_frame[f]));
+                    m_counters.command_to_strike_frames.add(double(frame - m_order_frame[f]));
                     m_order_frame[f] = -1;
                 }
                 break;
@@ -156,11 +152,11 @@ void Bout::step(double t_s) {
                 (event.hit ? m_counters.hits : m_counters.misses) += 1;
                 m_counters.last_contact_error_m = event.contact_error_m;
                 m_counters.last_hit = event.hit;
-                m_counters.contact_speed_mps.push_back(event.effector_speed_mps);
+                m_counters.contact_speed_mps.add(event.effector_speed_mps);
                 break;
             case FighterEvent::Type::strike_end:
                 (event.impact ? m_counters.impacts : m_counters.follow_throughs) += 1;
-                if (event.impact) m_counters.impact_overshoot_m.push_back(event.overshoot_m);
+                if (event.impact) m_counters.impact_overshoot_m.add(event.overshoot_m);
                 m_counters.joint_limit_violations += event.joint_limit_violations;
                 break;
             default: break;
@@ -176,7 +172,7 @@ void Bout::step(double t_s) {
     }
     ++m_counters.frames;
     const double elapsed_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started).count();
-    m_counters.frame_us.push_back(elapsed_us);
+    m_counters.frame_us.add(elapsed_us);
     m_counters.missed_frames += elapsed_us > 1e6 / m_options.rate_hz;
 }
 

@@ -6,6 +6,7 @@
 // nothing unless recording (the recording grows).
 
 #include "kumite/formats/bvh_reader.h"
+#include "kumite/runtime/value_histogram.h"
 #include "kumite/runtime/fighter.h"
 #include "kumite/runtime/head_tracker.h"
 #include "kumite/runtime/supervisor.h"
@@ -39,10 +40,11 @@ struct BoutEvent {
 struct BoutCounters {
     long long frames = 0, missed_frames = 0;
     long long orders = 0, strikes = 0, hits = 0, misses = 0, ignored_orders = 0;
-    std::vector<double> frame_us;               // every frame's cost (reserve: see Bout)
-    std::vector<double> command_to_strike_frames;
-    std::vector<double> impact_overshoot_m;     // per strike that stopped at the target (impact): how far past it
-    std::vector<double> contact_speed_mps;      // per strike: the hit point's speed arriving at the contact
+    // Summaries in fixed memory, so that a bout of hours stays flat.
+    ValueHistogram frame_us{0.1, 1e7};          // every frame's cost
+    ValueHistogram command_to_strike_frames{0.5, 1e6};
+    ValueHistogram impact_overshoot_m{1e-5, 10.0}; // per strike that stopped at the target (impact): how far past it
+    ValueHistogram contact_speed_mps{1e-3, 1e3};   // per strike: the hit point's speed arriving at the contact
     long long joint_limit_violations = 0;       // summed over strikes and frames
     long long impacts = 0, follow_throughs = 0; // strikes that stopped at the target, strikes the user dodged
     double last_contact_error_m = -1.0;         // of the last strike; -1 before any
