@@ -195,15 +195,9 @@ int run_play(int argc, char** argv) {
     }
 
     // The database and every character (any of them can be switched to).
-    std::filesystem::path database_path;
-    if (arguments.positionals.empty()) {
-        Result<std::filesystem::path> found = default_database_path();
-        if (!found) return input_error(found.error().message);
-        database_path = *found;
-    } else {
-        database_path = arguments.positionals[0];
-    }
-    Result<MotionDatabase> database = MotionDatabase::open(database_path);
+    Result<std::filesystem::path> database_path = database_path_from(arguments);
+    if (!database_path) return input_error(database_path.error().message);
+    Result<MotionDatabase> database = MotionDatabase::open(*database_path);
     if (!database) return input_error(database.error().message);
     const std::optional<std::string> folder = arguments.value("characters-dir");
     const std::filesystem::path characters_dir = folder ? std::filesystem::path(*folder) : default_characters_dir();

@@ -97,4 +97,9 @@ Result<std::filesystem::path> default_database_path() {
     return cached;
 }
 
+Result<std::filesystem::path> database_path_from(const Arguments& arguments) {
+    if (!arguments.positionals.empty()) return std::filesystem::path(arguments.positionals[0]);
+    return default_database_path();
+}
+
 } // namespace kumite::cli

@@ -42,16 +42,10 @@ std::optional<int> fighter_setup(FighterSetup& setup, const CommandSpec& spec, c
     if (!character) return usage_error(spec, character.error().message);
     setup.character = std::move(*character);
 
-    std::filesystem::path path;
-    if (arguments.positionals.empty()) {
-        Result<std::filesystem::path> found = default_database_path();
-        if (!found) return input_error(found.error().message);
-        path = *found;
-    } else {
-        path = arguments.positionals[0];
-    }
-    setup.database_path = path.string();
-    Result<MotionDatabase> database = MotionDatabase::open(path);
+    Result<std::filesystem::path> path = database_path_from(arguments);
+    if (!path) return input_error(path.error().message);
+    setup.database_path = path->string();
+    Result<MotionDatabase> database = MotionDatabase::open(*path);
     if (!database) return input_error(database.error().message);
     setup.database = std::move(*database);
     Result<RestAnatomy> anatomy = rest_anatomy_build(setup.character.clip, setup.character.body_map);
