@@ -57,7 +57,7 @@ Result<std::filesystem::path> default_database_path() {
     if (!stream) return make_error(ErrorCode::io, missing_captures_message(mocap_root, "cannot read " + annotations_path.string()));
     std::ostringstream text;
     text << stream.rdbuf();
-    Result<RawAnnotations> annotations = annotations_read_file(annotations_path);
+    Result<RawAnnotations> annotations = annotations_parse(text.str(), annotations_path.string()); // read once, hashed below
     if (!annotations) return annotations.error();
 
     // What the bake depends on: the annotations, each capture's path, size and time, the database format.

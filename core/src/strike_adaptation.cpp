@@ -128,9 +128,9 @@ void StrikeAdapter::begin(const StrikePlan& plan, const MirFrame& current, const
     const AdaptedFrame at_contact = step(contact_index(), m_scratch_pose);
     if (at_contact.reach == Reach::unreachable) m_stop_point = at_contact.effector;
     // The approach: the ways the effector itself travels into the stop point over the last 1 to 4 frames before
-    // the contact (chords of its path that move at least a centimetre; from the limb's root when it arrives at
-    // rest, the outward direction alone). A sweeping kick or a hook turns in its last frames: stopped along its final direction alone, it
-    // would carry on along the way it came from, across and into the target.
+    // the contact (chords of its path that move at least a centimetre; when it arrives at rest, the outward
+    // direction alone). A sweeping kick or a hook turns in its last frames: stopped along its final direction
+    // alone, it would carry on along the way it came from, across and into the target.
     const Eigen::Vector3d from_root = m_stop_point - m_decoder.model_positions()[m_rig.anatomy().limbs[m_limb].root];
     m_approach_count = 0;
     for (int back = 1; back <= k_approach_chords && contact_index() - back >= 0; ++back) {
@@ -192,7 +192,7 @@ bool StrikeAdapter::keep_clip_bends(const LimbPins& pins) {
     for (int limb = 0; limb < k_limb_count; ++limb) {
         const LimbChain& chain = anatomy.limbs[limb];
         const Eigen::Vector3d& root = positions[chain.root];
-        const Eigen::Vector3d own = root + m_frame.part_frames[chain.parent_part] * m_frame.extremity[limb] * chain.length();
+        const Eigen::Vector3d own = root + clip_reach(limb);
         Eigen::Vector3d asked = pins.pinned[limb] ? pins.extremity_world[limb] : Eigen::Vector3d(own + pins.extremity_offset_world[limb]);
         if ((asked - own).norm() < 1e-3 || (asked - root).norm() < 1e-6) continue;
         // The clip's bend carried to the new line: its component across that line, when it keeps one.
@@ -209,10 +209,15 @@ bool StrikeAdapter::keep_clip_bends(const LimbPins& pins) {
     return changed;
 }
 
+Eigen::Vector3d StrikeAdapter::clip_reach(int limb) const {
+    const LimbChain& chain = m_rig.anatomy().limbs[limb];
+    return m_frame.part_frames[chain.parent_part] * m_frame.extremity[limb] * chain.length();
+}
+
 Eigen::Vector3d StrikeAdapter::clip_bend(int limb) const {
     const LimbChain& chain = m_rig.anatomy().limbs[limb];
     const Eigen::Vector3d& root = m_decoder.model_positions()[chain.root];
-    const Eigen::Vector3d own = root + m_frame.part_frames[chain.parent_part] * m_frame.extremity[limb] * chain.length();
+    const Eigen::Vector3d own = root + clip_reach(limb);
     const TwoBoneSolution clip = two_bone_ik(root, own, chain.upper_length, chain.lower_length, m_clip_swivels[limb],
                                              limb_swivel_reference(m_frame, limb));
     return limb_bend_direction(root, clip.middle, clip.extremity, m_settings.limits.bent_rad);

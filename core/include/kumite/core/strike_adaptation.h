@@ -151,6 +151,8 @@ private:
     // How far `point` is past the stop point along the farthest of the approach directions (0 when behind all).
     double past_stop(const Eigen::Vector3d& point) const;
     bool keep_clip_bends(const LimbPins& pins);
+    // The vector from limb `limb`'s root to its extremity in the clip's own frame m_frame (world, metres).
+    Eigen::Vector3d clip_reach(int limb) const;
     // Where limb `limb`'s middle joint bulges in the clip's own frame, from the decoded root (zero if straight).
     Eigen::Vector3d clip_bend(int limb) const;
     unsigned violations() const;
