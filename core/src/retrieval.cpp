@@ -3,6 +3,7 @@
 #include "kumite/core/pose_features.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <limits>
@@ -66,8 +67,6 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
     }
     const int clusters = static_cast<int>(m_db.clusters.size());
     m_cluster_radius.resize(clusters);
-    m_group_begin.assign(std::size_t(clusters) * m_order_keys + 1, 0);
-    m_group_boxes.assign(std::size_t(clusters) * m_order_keys, AlignedBox{});
     for (int c = 0; c < clusters; ++c) {
         const DbCluster& cluster = m_db.clusters[c];
         double radius = 0.0;
@@ -78,34 +77,71 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
             radius = std::max(radius, distance);
         }
         m_cluster_radius[c] = static_cast<float>(radius);
+    }
+    // Groups: one per order key, or one per cluster and order key (trees_per_cluster).
+    m_group_clusters = m_settings.trees_per_cluster ? std::max(1, clusters) : 1;
+    m_group_begin.assign(std::size_t(m_group_clusters) * m_order_keys + 1, 0);
+    for (int group_cluster = 0; group_cluster < m_group_clusters; ++group_cluster) {
         for (int key = 0; key < m_order_keys; ++key) {
-            const std::size_t group = std::size_t(c) * m_order_keys + key;
-            m_group_begin[group] = static_cast<std::uint32_t>(m_candidates.size());
-            for (std::uint32_t m = 0; m < cluster.member_count; ++m) {
-                const std::uint32_t pose = m_db.members[cluster.first_member + m];
-                const ClipInfo& clip = m_clips[m_db.poses[pose].clip];
-                if (int(pose) < clip.first_start || int(pose) >= clip.end_start || order_key(clip.semantics, clip.side, clip.arm_strike) != key) {
-                    continue;
+            m_group_begin[std::size_t(group_cluster) * m_order_keys + key] = static_cast<std::uint32_t>(m_candidates.size());
+            for (int c = 0; c < clusters; ++c) {
+                if (m_settings.trees_per_cluster && c != group_cluster) continue;
+                const DbCluster& cluster = m_db.clusters[c];
+                for (std::uint32_t m = 0; m < cluster.member_count; ++m) {
+                    const std::uint32_t pose = m_db.members[cluster.first_member + m];
+                    const ClipInfo& clip = m_clips[m_db.poses[pose].clip];
+                    if (int(pose) < clip.first_start || int(pose) >= clip.end_start || order_key(clip.semantics, clip.side, clip.arm_strike) != key) {
+                        continue;
+                    }
+                    const DbPose& start = m_db.poses[pose];
+                    const DbPose& hit = m_db.poses[m_db.clips[start.clip].first_pose + m_db.clips[start.clip].hit_frame];
+                    const Eigen::Vector3d hit_in_start =
+                        to_start_heading(start, m_poses[pose].heading_cos, m_poses[pose].heading_sin, hit.hit_point) / clip.actor_scale_length;
+                    Candidate candidate{};
+                    for (int axis = 0; axis < 3; ++axis) candidate.hit_in_start[axis] = static_cast<float>(hit_in_start[axis]);
+                    candidate.distance_to_centroid = m_poses[pose].distance_to_centroid;
+                    candidate.pose = pose;
+                    candidate.support_foot = clip.support_foot;
+                    candidate.start_flags = start.flags;
+                    m_candidates.push_back(candidate);
                 }
-                const DbPose& start = m_db.poses[pose];
-                const DbPose& hit = m_db.poses[m_db.clips[start.clip].first_pose + m_db.clips[start.clip].hit_frame];
-                const Eigen::Vector3d hit_in_start =
-                    to_start_heading(start, m_poses[pose].heading_cos, m_poses[pose].heading_sin, hit.hit_point) / clip.actor_scale_length;
-                Candidate candidate{};
-                for (int axis = 0; axis < 3; ++axis) candidate.hit_in_start[axis] = static_cast<float>(hit_in_start[axis]);
-                candidate.distance_to_centroid = m_poses[pose].distance_to_centroid;
-                candidate.pose = pose;
-                candidate.support_foot = clip.support_foot;
-                m_candidates.push_back(candidate);
-                m_group_boxes[group].extend(hit_in_start);
             }
         }
     }
     m_group_begin.back() = static_cast<std::uint32_t>(m_candidates.size());
+    build_trees();
     m_order_counts.assign(m_order_keys, 0);
     for (std::size_t group = 0; group + 1 < m_group_begin.size(); ++group) {
         m_order_counts[group % m_order_keys] += static_cast<int>(m_group_begin[group + 1] - m_group_begin[group]);
     }
+}
+
+void Retriever::build_trees() {
+    std::vector<std::uint32_t> poses(m_candidates.size());
+    for (std::size_t k = 0; k < m_candidates.size(); ++k) poses[k] = m_candidates[k].pose;
+    std::sort(poses.begin(), poses.end()); // samples evenly spread over the database, not over the groups
+    m_key_projection = PoseKeyProjection::learn(m_db.features, poses);
+    std::vector<float> points(m_candidates.size() * k_tree_dimensions);
+    for (std::size_t k = 0; k < m_candidates.size(); ++k) {
+        Candidate& candidate = m_candidates[k];
+        m_key_projection.project(m_db.feature(candidate.pose), candidate.pose_key);
+        float* point = points.data() + k * k_tree_dimensions;
+        std::copy_n(candidate.hit_in_start, 3, point);
+        std::copy_n(candidate.pose_key, k_pose_key_dimensions, point + 3);
+    }
+    // Split widths in score units: a target gap weighs target_weight, a key gap pose_weight (both in leg lengths).
+    std::array<float, k_tree_dimensions> split_scale;
+    std::fill_n(split_scale.begin(), 3, static_cast<float>(m_settings.target_weight));
+    std::fill(split_scale.begin() + 3, split_scale.end(), static_cast<float>(m_settings.pose_weight));
+    std::vector<std::uint32_t> order(m_candidates.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<std::uint32_t>(k);
+    m_group_root.assign(m_group_begin.size() - 1, -1);
+    for (std::size_t group = 0; group + 1 < m_group_begin.size(); ++group) {
+        m_group_root[group] = m_trees.add(points, split_scale, order, m_group_begin[group], m_group_begin[group + 1], m_settings.leaf_size);
+    }
+    std::vector<Candidate> in_tree_order(m_candidates.size());
+    for (std::size_t k = 0; k < order.size(); ++k) in_tree_order[k] = m_candidates[order[k]];
+    m_candidates = std::move(in_tree_order);
 }
 
 int Retriever::candidate_count(int semantics, Side side) const {
@@ -137,7 +173,7 @@ FloorAlignment clip_alignment(const MotionDatabaseView& db, int clip, int frame,
 
 RetrievalWorkspace Retriever::make_workspace() const {
     RetrievalWorkspace workspace;
-    workspace.group_order.resize(m_db.clusters.size() * 3 * 2); // every side and limb of one semantics
+    workspace.group_order.resize(std::size_t(m_group_clusters) * 3 * 2); // every side and limb of one semantics
     workspace.centroid_distance.resize(m_db.clusters.size());
     return workspace;
 }
@@ -189,29 +225,72 @@ void Retriever::finish(RetrievalResult& result, const RetrievalQuery& query) con
     result.contact_point_world = query.heading.to_world(contact_in_start * scale_to_character(clip, query.character));
 }
 
-void Retriever::visit_group(int group, bool arm, double centroid_distance, const RetrievalQuery& query,
-                            const Eigen::Vector3d& target_in_heading, RetrievalResult& best) const {
-    // In the group's units (scale lengths) the target is one point for every actor, and a box distance times
-    // to_score is the target part of a candidate's lower bound.
+namespace {
+
+// The distance from `value` to the interval [low, high], 0 inside.
+inline float gap(float value, float low, float high) { return std::max(0.0f, std::max(low - value, value - high)); }
+
+} // namespace
+
+Retriever::GroupQuery Retriever::group_query(int group, double centroid_distance, std::span<const float> query_key, const RetrievalQuery& query,
+                                             const Eigen::Vector3d& target_in_heading) const {
+    // In the group's units (scale lengths) the target is one point for every actor, and a hit-point distance times
+    // to_score is the target part of a candidate's score.
+    const bool arm = group % 2 == 1;
     const double length = character_scale_length(arm, query.character);
-    const Eigen::Vector3f target = (target_in_heading / length).cast<float>();
-    const double to_score = m_settings.target_weight * length / query.character.leg_length_m;
+    GroupQuery group_query;
+    group_query.group = group;
+    group_query.key = query_key;
+    group_query.target = (target_in_heading / length).cast<float>();
+    group_query.to_score = m_settings.target_weight * length / query.character.leg_length_m;
+    group_query.centroid_distance = centroid_distance;
+    // Every member's pose distance is at least the query's distance to the centroid less the cluster's radius.
+    if (centroid_distance >= 0.0) {
+        group_query.pose_bound = std::max(0.0, centroid_distance - m_cluster_radius[group / m_order_keys] - k_rounding_slack);
+    }
+    return group_query;
+}
+
+double Retriever::node_bound(int node, const GroupQuery& group) const {
+    // The hit box's and the key box's distances to the query. The float distances may differ from the exact ones
+    // by rounding; the slack keeps the bound a bound.
+    const float* low = m_trees.low(node);
+    const float* high = m_trees.high(node);
+    float target_squared = 0.0f, key_squared = 0.0f;
+    for (int axis = 0; axis < 3; ++axis) {
+        const float along = gap(group.target[axis], low[axis], high[axis]);
+        target_squared += along * along;
+    }
+    for (int d = 0; d < k_pose_key_dimensions; ++d) {
+        const float along = gap(group.key[d], low[3 + d], high[3 + d]);
+        key_squared += along * along;
+    }
+    const double pose_bound = std::max(group.pose_bound, std::sqrt(static_cast<double>(key_squared)) - k_rounding_slack);
+    return m_settings.pose_weight * pose_bound + group.to_score * std::max(0.0, std::sqrt(static_cast<double>(target_squared)) - k_rounding_slack);
+}
+
+void Retriever::visit_leaf(const BoxTree::Node& leaf, const GroupQuery& group, const RetrievalQuery& query, RetrievalResult& best) const {
     const double pose_weight = m_settings.pose_weight;
-    for (std::uint32_t k = m_group_begin[group]; k < m_group_begin[group + 1]; ++k) {
+    for (std::uint32_t k = leaf.begin; k < leaf.end; ++k) {
         const Candidate& candidate = m_candidates[k];
-        if (candidate.support_foot && !support_planted(candidate.support_foot, m_db.poses[candidate.pose].flags, query)) continue;
+        if (candidate.support_foot && !support_planted(candidate.support_foot, candidate.start_flags, query)) continue;
         ++best.counts.candidates_seen;
-        const double pose_part =
-            centroid_distance < 0.0 ? 0.0 : pose_weight * std::max(0.0, std::abs(centroid_distance - candidate.distance_to_centroid) - k_rounding_slack);
+        float key_squared = 0.0f;
+        for (int d = 0; d < k_pose_key_dimensions; ++d) {
+            const float along = candidate.pose_key[d] - group.key[d];
+            key_squared += along * along;
+        }
+        double pose_bound = std::sqrt(static_cast<double>(key_squared));
+        if (group.centroid_distance >= 0.0) pose_bound = std::max(pose_bound, std::abs(group.centroid_distance - candidate.distance_to_centroid));
+        const double pose_part = pose_weight * std::max(0.0, pose_bound - k_rounding_slack);
         if (!(pose_part < best.score)) continue;
         float squared = 0.0f;
         for (int axis = 0; axis < 3; ++axis) {
-            const float along = candidate.hit_in_start[axis] - target[axis];
+            const float along = candidate.hit_in_start[axis] - group.target[axis];
             squared += along * along;
         }
         best.counts.inside_box += squared < 0.01f;
-        // The float distance may differ from the exact one by rounding; the slack keeps the bound a bound.
-        const double target_part = to_score * std::max(0.0, std::sqrt(static_cast<double>(squared)) - k_rounding_slack);
+        const double target_part = group.to_score * std::max(0.0, std::sqrt(static_cast<double>(squared)) - k_rounding_slack);
         if (!(pose_part + target_part < best.score)) continue;
         ++best.counts.pose_scored;
         const double d_pose = rms_distance(query.pose_feature, m_db.feature(candidate.pose));
@@ -221,38 +300,54 @@ void Retriever::visit_group(int group, bool arm, double centroid_distance, const
     }
 }
 
+void Retriever::visit_group(const GroupQuery& group, double root_bound, const RetrievalQuery& query, RetrievalResult& best) const {
+    // Depth first, the nearer child first, each node's bound checked again when it is popped (the best may have
+    // improved meanwhile). Trees are balanced, so the stack never holds more than one node per level.
+    std::pair<int, double> stack[BoxTree::max_depth + 1];
+    int depth = 0;
+    stack[depth++] = {m_group_root[group.group], root_bound};
+    while (depth > 0) {
+        const auto [index, bound] = stack[--depth];
+        if (!(bound < best.score)) continue;
+        ++best.counts.nodes_visited;
+        const BoxTree::Node& node = m_trees.node(index);
+        if (node.leaf()) {
+            visit_leaf(node, group, query, best);
+            continue;
+        }
+        const int left = index + 1, right = static_cast<int>(node.right);
+        const double left_bound = node_bound(left, group), right_bound = node_bound(right, group);
+        const bool left_first = left_bound <= right_bound;
+        const std::pair<int, double> near{left_first ? left : right, left_first ? left_bound : right_bound};
+        const std::pair<int, double> far{left_first ? right : left, left_first ? right_bound : left_bound};
+        if (far.second < best.score) stack[depth++] = far;
+        if (near.second < best.score) stack[depth++] = near;
+    }
+}
+
 RetrievalResult Retriever::query(const RetrievalQuery& query, RetrievalWorkspace& workspace) const {
     assert(query.pose_feature.size() == std::size_t(k_feature_dimensions));
     RetrievalResult best;
     best.score = k_infinity;
     if (query.semantics < 0 || query.semantics >= static_cast<int>(m_semantics_names.size())) return best;
     const Eigen::Vector3d target_in_heading = query.heading.to_heading(query.target_world);
-    const int clusters = static_cast<int>(m_db.clusters.size());
-    if (candidate_count(query.semantics, query.side) <= m_settings.scan_below) { // small order: scan it
-        for (int c = 0; c < clusters; ++c) {
-            for (Side side : k_sides) {
-                if (query.side != Side::none && side != query.side) continue;
-                for (bool arm : {false, true}) visit_group(c * m_order_keys + order_key(query.semantics, side, arm), arm, -1.0, query, target_in_heading, best);
-            }
-        }
-        finish(best, query);
-        return best;
-    }
-    // Lower bounds per group: the pose part from the triangle inequality through the centroid, the target part
-    // from the group's union box; groups are then visited best bound first.
+    std::array<float, k_pose_key_dimensions> query_key;
+    m_key_projection.project(query.pose_feature, query_key);
+    // The cluster bound needs the query's distance to every centroid: worth it only with trees per cluster, and
+    // then not for small orders (measured with tests/bench/retrieval_bench.cpp).
+    const bool cluster_bounds = m_settings.trees_per_cluster && candidate_count(query.semantics, query.side) > m_settings.scan_below;
+    // The groups of the order with their roots' bounds, visited best bound first.
     std::size_t groups = 0;
-    for (int c = 0; c < clusters; ++c) {
-        const double distance = rms_distance(m_db.centroid(c), query.pose_feature);
-        workspace.centroid_distance[c] = distance;
-        const double pose_bound = std::max(0.0, distance - m_cluster_radius[c] - k_rounding_slack);
+    for (int c = 0; c < m_group_clusters; ++c) {
+        double centroid_distance = -1.0;
+        if (cluster_bounds) centroid_distance = workspace.centroid_distance[c] = rms_distance(m_db.centroid(c), query.pose_feature);
         for (Side side : k_sides) {
             if (query.side != Side::none && side != query.side) continue;
             for (bool arm : {false, true}) {
                 const int group = c * m_order_keys + order_key(query.semantics, side, arm);
-                if (m_group_begin[group] == m_group_begin[group + 1]) continue;
-                const double length = character_scale_length(arm, query.character);
-                const double target_bound = m_group_boxes[group].distance_to(target_in_heading / length) * length / query.character.leg_length_m;
-                workspace.group_order[groups++] = {m_settings.pose_weight * pose_bound + m_settings.target_weight * target_bound, group};
+                if (m_group_root[group] < 0) continue;
+                const GroupQuery prepared = group_query(group, centroid_distance, query_key, query, target_in_heading);
+                workspace.group_order[groups++] = {node_bound(m_group_root[group], prepared), group};
             }
         }
     }
@@ -262,9 +357,10 @@ RetrievalResult Retriever::query(const RetrievalQuery& query, RetrievalWorkspace
         const auto [bound, group] = workspace.group_order[g];
         if (!(bound < best.score)) break; // no candidate of this or a later group can do better
         const int cluster = group / m_order_keys;
-        best.counts.clusters_visited += cluster != last_cluster;
+        best.counts.clusters_visited += cluster_bounds && cluster != last_cluster;
         last_cluster = cluster;
-        visit_group(group, group % 2 == 1, workspace.centroid_distance[cluster], query, target_in_heading, best);
+        const double centroid_distance = cluster_bounds ? workspace.centroid_distance[cluster] : -1.0;
+        visit_group(group_query(group, centroid_distance, query_key, query, target_in_heading), bound, query, best);
     }
     finish(best, query);
     return best;

@@ -4,6 +4,8 @@
 //   - the fast path (Retriever::query) and the exhaustive reference (query_exhaustive) in the same run, timed;
 //   - agreement: the fast path's clip and start equal the reference's, or its score is within 1%;
 //   - heap allocations during the fast path (must be 0);
+//   - the index's options (one tree per order or per cluster and order, leaf sizes) on the same queries, each
+//     with its own times, speed-up over the same exhaustive run and agreement ("options");
 //   - the adaptation offset the choice leaves: the chosen start decoded onto the character at its contact frame,
 //     aligned, and the hit joint's distance to the target; measured for both scalings of the actor's hit path
 //     (leg length, striking limb's length), so the better one can be kept;
@@ -37,6 +39,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <tuple>
 
 using namespace kumite;
 using namespace kumite::test;
@@ -81,9 +84,32 @@ nlohmann::json bench_database(const std::filesystem::path& path, const std::vect
     const MotionDatabaseView& db = database->view();
     RetrievalSettings by_limb;
     by_limb.scaling = RetrievalScaling::limb_length;
+    const auto build_started = Clock::now();
     const Retriever retriever(db);
+    const double retriever_build_ms = microseconds_since(build_started) / 1000.0;
     const Retriever limb_retriever(db, by_limb);
     RetrievalWorkspace workspace = retriever.make_workspace();
+    // The index's options, measured on the same queries (the default above is one of them).
+    struct Option {
+        std::string name;
+        std::unique_ptr<Retriever> retriever;
+        RetrievalWorkspace workspace;
+        double build_ms = 0.0;
+        std::vector<double> fast_us;
+        int agreed = 0;
+    };
+    std::vector<Option> options;
+    for (const auto& [name, per_cluster, leaf] : {std::tuple{"order_trees_leaf_8", false, 8}, std::tuple{"cluster_trees_leaf_8", true, 8},
+                                                  std::tuple{"cluster_trees_leaf_64", true, 64}}) {
+        RetrievalSettings settings;
+        settings.trees_per_cluster = per_cluster;
+        settings.leaf_size = leaf;
+        const auto started = Clock::now();
+        auto option_retriever = std::make_unique<Retriever>(db, settings);
+        const double build_ms = microseconds_since(started) / 1000.0;
+        RetrievalWorkspace option_workspace = option_retriever->make_workspace();
+        options.push_back({name, std::move(option_retriever), std::move(option_workspace), build_ms, {}, 0});
+    }
     std::vector<int> strike_semantics;
     for (const DbClip& clip : db.clips) {
         const int id = retriever.semantics_id(db.string(clip.semantics));
@@ -107,7 +133,7 @@ nlohmann::json bench_database(const std::filesystem::path& path, const std::vect
 #endif
 
     std::vector<double> fast_us, exhaustive_us, brute_centroid_us, flann_centroid_us, leg_offsets, limb_offsets;
-    std::vector<double> visited, candidates, scored;
+    std::vector<double> visited, candidates, nodes, pose_scored, scored;
     std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> by_semantics; // fast, exhaustive
     int agreed = 0, same_start = 0, total = 0, same_cluster = 0, not_found = 0;
     long allocations = 0;
@@ -169,6 +195,14 @@ nlohmann::json bench_database(const std::filesystem::path& path, const std::vect
             fast_of.push_back(fast_us.back());
             exhaustive_of.push_back(exhaustive_us.back());
             ++total;
+            for (Option& option : options) {
+                const auto option_started = Clock::now();
+                const RetrievalResult found = option.retriever->query(query, option.workspace);
+                option.fast_us.push_back(microseconds_since(option_started));
+                option.agreed += found.found == exhaustive.found &&
+                                 (!found.found || (found.clip == exhaustive.clip && found.start_frame == exhaustive.start_frame) ||
+                                  found.score <= exhaustive.score * 1.01);
+            }
             if (!fast.found || !exhaustive.found) {
                 not_found += !exhaustive.found;
                 agreed += fast.found == exhaustive.found;
@@ -179,6 +213,8 @@ nlohmann::json bench_database(const std::filesystem::path& path, const std::vect
             agreed += same || fast.score <= exhaustive.score * 1.01;
             visited.push_back(fast.counts.clusters_visited);
             candidates.push_back(fast.counts.candidates_seen);
+            nodes.push_back(fast.counts.nodes_visited);
+            pose_scored.push_back(fast.counts.pose_scored);
             scored.push_back(fast.counts.target_scored);
             leg_offsets.push_back(adaptation_offset(rig, pose, db, fast, query.target_world));
             const RetrievalResult by_limb_result = limb_retriever.query(query, workspace);
@@ -193,6 +229,7 @@ nlohmann::json bench_database(const std::filesystem::path& path, const std::vect
         {"poses", db.poses.size()},
         {"clusters", db.clusters.size()},
         {"queries", total},
+        {"retriever_build_ms", retriever_build_ms},
         {"fast_us", fast},
         {"exhaustive_us", exhaustive},
         {"baseline", "exhaustive search (every start of every clip of the order, exact distances), same run"},
@@ -203,12 +240,23 @@ nlohmann::json bench_database(const std::filesystem::path& path, const std::vect
         {"fast_path_allocations", allocations},
         {"fast_path_counts_mean",
          {{"clusters_visited", summary(visited)["mean"]}, {"candidates_seen", summary(candidates)["mean"]},
+          {"nodes_visited", summary(nodes)["mean"]}, {"pose_scored", summary(pose_scored)["mean"]},
           {"target_scored", summary(scored)["mean"]}}},
         {"adaptation_offset_m",
          {{"leg_length_scaling", leg_offset},
           {"limb_length_scaling", limb_offset},
           {"smaller_median", leg_offset["median"].get<double>() <= limb_offset["median"].get<double>() ? "leg_length" : "limb_length"}}},
         {"nearest_centroid_us", {{"brute_force_kovar", summary(brute_centroid_us)}}}};
+    result["options"]["order_trees_leaf_64 (default)"] = {
+        {"build_ms", retriever_build_ms}, {"fast_us", fast}, {"speedup_median", result["speedup_median"]}, {"agreement", result["agreement"]}};
+    for (const Option& option : options) {
+        const nlohmann::json option_fast = summary(option.fast_us);
+        result["options"][option.name] = {
+            {"build_ms", option.build_ms},
+            {"fast_us", option_fast},
+            {"speedup_median", exhaustive["median"].get<double>() / std::max(1e-9, option_fast["median"].get<double>())},
+            {"agreement", static_cast<double>(option.agreed) / std::max(1, total)}};
+    }
     for (const auto& [semantics, times] : by_semantics) {
         const nlohmann::json fast_of = summary(times.first), exhaustive_of = summary(times.second);
         result["by_semantics"][semantics] = {

@@ -108,30 +108,40 @@ TEST_CASE("retrieval: the contact is the clip's annotated hit, scored by where i
     }
 }
 
-TEST_CASE("retrieval: the fast path agrees with the exhaustive reference", "[retrieval][corpus]") {
+TEST_CASE("retrieval: the fast path agrees with the exhaustive reference, with every index layout", "[retrieval][corpus]") {
     const MotionDatabaseContent* content = reference_database();
     if (!content) return;
     const MotionDatabaseView db = content->view();
-    const Retriever retriever(db);
-    RetrievalWorkspace workspace = retriever.make_workspace();
-    SplitMix64 random{17};
-    int agreed = 0, total = 0;
-    for (const char* name : k_characters) {
-        Standing standing(name, db);
-        for (int i = 0; i < 100; ++i) {
-            RetrievalQuery query = standing.query;
-            query.semantics = retriever.semantics_id(i % 3 == 0 ? "kick" : i % 3 == 1 ? "punch" : "slash");
-            query.side = static_cast<Side>(i % 3);
-            query.target_world = Eigen::Vector3d(random.uniform(-0.6, 0.6), random.uniform(0.3, 2.2), random.uniform(-0.2, 1.5));
-            const RetrievalResult fast = retriever.query(query, workspace);
-            const RetrievalResult exhaustive = retriever.query_exhaustive(query);
-            REQUIRE(fast.found == exhaustive.found);
-            ++total;
-            agreed += fast.score <= exhaustive.score * (1.0 + 1e-9) + 1e-12;
-            CHECK(fast.counts.target_scored <= exhaustive.counts.target_scored);
+    // The default, deep trees (a candidate per leaf), and trees per cluster with the centroid bound on every order.
+    RetrievalSettings deep, per_cluster;
+    deep.leaf_size = 1;
+    per_cluster.trees_per_cluster = true;
+    per_cluster.leaf_size = 4;
+    per_cluster.scan_below = 0;
+    for (const RetrievalSettings& settings : {RetrievalSettings{}, deep, per_cluster}) {
+        const Retriever retriever(db, settings);
+        RetrievalWorkspace workspace = retriever.make_workspace();
+        SplitMix64 random{17};
+        int agreed = 0, total = 0, pruned = 0;
+        for (const char* name : k_characters) {
+            Standing standing(name, db);
+            for (int i = 0; i < 60; ++i) {
+                RetrievalQuery query = standing.query;
+                query.semantics = retriever.semantics_id(i % 3 == 0 ? "kick" : i % 3 == 1 ? "punch" : "slash");
+                query.side = static_cast<Side>(i % 3);
+                query.target_world = Eigen::Vector3d(random.uniform(-0.6, 0.6), random.uniform(0.3, 2.2), random.uniform(-0.2, 1.5));
+                const RetrievalResult fast = retriever.query(query, workspace);
+                const RetrievalResult exhaustive = retriever.query_exhaustive(query);
+                REQUIRE(fast.found == exhaustive.found);
+                ++total;
+                agreed += fast.score <= exhaustive.score * (1.0 + 1e-9) + 1e-12;
+                CHECK(fast.counts.target_scored <= exhaustive.counts.target_scored);
+                pruned += fast.counts.candidates_seen < exhaustive.counts.candidates_seen;
+            }
         }
+        CHECK(agreed == total);
+        CHECK(pruned > total / 2); // the bounds skip candidates without looking at them
     }
-    CHECK(agreed == total);
 }
 
 TEST_CASE("retrieval: concurrent queries on one retriever give the single-threaded answers", "[retrieval][corpus]") {

@@ -13,21 +13,24 @@
 // arrives in its natural hit posture (the paper's d(t_c) = X - M(t_c) at the annotated t_c), with the clip's own
 // timing from the start to the hit.
 //
-// Search. Clusters are visited nearest centroid first. sqrt of Kovar's distance is a metric (the minimum over
-// isometries of a Euclidean distance), so |d(q, c) - d(m, c)| bounds d(q, m) from below for a member m of the
-// cluster with centroid c; d_target is exact and cheap (one point per start, kept beside it), and the distance from
-// the target to a group's box of those points bounds it for the whole group. A
-// candidate whose bound cannot beat the best so far is skipped before any exact distance is computed, and the
-// search stops when a whole group's bound cannot. This is the paper's "nearest cluster, then filter by the hit
-// trajectory's bounding box (target inside, else nearest boxes)" made exact: the fast path returns what the
-// exhaustive reference returns, unless two scores tie.
+// Search. Candidates are grouped by cluster and order, and each group is a k-d tree (box_tree.h) over two cheap
+// lower bounds of a candidate's score: its pose key (pose_embedding.h: Euclidean distances between keys never exceed
+// the RMS Kovar distance) and its hit point (d_target is exact and cheap, one point per start). sqrt of Kovar's
+// distance is a metric (the minimum over isometries of a Euclidean distance), so |d(q, c) - d(m, c)| bounds d(q, m)
+// from below too, for a member m of the cluster with centroid c. Groups are visited best bound first; inside one,
+// a node whose box bounds every score below it above the best so far is skipped whole, and the search stops when a
+// whole group's bound cannot win. This is the paper's "nearest cluster, then filter by the hit trajectory's
+// bounding box (target inside, else nearest boxes)" made exact: the fast path returns what the exhaustive
+// reference returns, unless two scores tie.
 //
 // Queries do not allocate (each thread brings its RetrievalWorkspace) and may run concurrently on one Retriever.
 
+#include "kumite/core/box_tree.h"
 #include "kumite/core/heading_frame.h"
 #include "kumite/core/hit_trajectory.h"
 #include "kumite/core/motion_database.h"
 #include "kumite/core/pose_distance.h"
+#include "kumite/core/pose_embedding.h"
 
 #include <cstdint>
 #include <span>
@@ -46,9 +49,15 @@ struct RetrievalSettings {
     double pose_weight = 1.0;
     double target_weight = 1.0;
     int min_lead_frames = 3; // a start at least this many frames before the hit, which is the contact (0.1 s at 30 fps)
-    // Orders with at most this many candidate starts are scanned without the centroid bound: below it, computing
-    // every centroid distance costs more than it saves (measured with tests/bench/retrieval_bench.cpp).
+    // One tree per order (semantics, side, limb) over every cluster's candidates, or one per cluster and order
+    // with the triangle inequality through the centroid as one more bound. One tree per order won at 220,000 poses
+    // (fewer nodes visited: the upper levels are shared; tests/bench/retrieval_bench.cpp reports both).
+    bool trees_per_cluster = false;
+    // With trees per cluster, orders with at most this many candidate starts skip the centroid bound: below it,
+    // computing every centroid distance costs more than it saves.
     int scan_below = 600;
+    // Candidates per leaf: a leaf is read sequentially, a node is a jump in memory; 64 was fastest (8 to 128 measured).
+    int leaf_size = 64;
     RetrievalScaling scaling = RetrievalScaling::leg_length;
 };
 
@@ -75,6 +84,7 @@ struct RetrievalCounts {
     int clusters_visited = 0;   // clusters whose members were looked at
     int candidates_seen = 0;    // members of those clusters that obey the order
     int inside_box = 0;         // of those, starts whose hit point is within a tenth of a leg (or arm) of the target
+    int nodes_visited = 0;      // tree nodes whose bound was low enough to open
     int pose_scored = 0;        // exact pose distances computed
     int target_scored = 0;      // candidates scored in full
 };
@@ -139,9 +149,9 @@ private:
         float distance_to_centroid = 0.0f; // sqrt(Kovar / points), leg lengths
         float heading_cos = 1.0f, heading_sin = 0.0f;
     };
-    // A group is the candidate starts of one cluster for one order key (semantics, side, arm or leg strike):
-    // m_candidates[m_group_begin[g] .. m_group_begin[g + 1]), g = cluster * m_order_keys + key, with the box of
-    // their hit points divided by each actor's scale length.
+    // A group is the candidate starts of one order key (semantics, side, arm or leg strike), or of one cluster for
+    // one order key: m_candidates[m_group_begin[g] .. m_group_begin[g + 1]), g = cluster * m_order_keys + key (cluster
+    // 0 when not per cluster), in its tree's order.
     int order_key(int semantics, Side side, bool arm) const { return (semantics * 3 + static_cast<int>(side)) * 2 + arm; }
     double character_scale_length(bool arm, const CharacterSize& character) const;
 
@@ -152,9 +162,20 @@ private:
     double scale_to_character(const ClipInfo& clip, const CharacterSize& character) const;
     // Scores one start exactly; returns false when its score cannot beat `best` (left untouched then).
     bool score_start(int pose_index, const RetrievalQuery& query, double d_pose, RetrievalResult& best) const;
-    // centroid_distance < 0: no pose bound (the scan of small orders).
-    void visit_group(int group, bool arm, double centroid_distance, const RetrievalQuery& query, const Eigen::Vector3d& target_in_heading,
-                     RetrievalResult& best) const;
+    // What a group's search needs of the query, prepared once per group.
+    struct GroupQuery {
+        int group = 0;
+        std::span<const float> key;     // the query's pose key
+        Eigen::Vector3f target;         // in the group's scale lengths
+        double to_score = 1.0;          // a target distance in scale lengths -> score
+        double centroid_distance = -1;  // the query's to the group's cluster centroid; < 0: no cluster bound
+        double pose_bound = 0.0;        // a pose distance bound for every member (from the cluster)
+    };
+    GroupQuery group_query(int group, double centroid_distance, std::span<const float> query_key, const RetrievalQuery& query,
+                           const Eigen::Vector3d& target_in_heading) const;
+    double node_bound(int node, const GroupQuery& group) const; // a lower bound of the score of every candidate below
+    void visit_group(const GroupQuery& group, double root_bound, const RetrievalQuery& query, RetrievalResult& best) const;
+    void visit_leaf(const BoxTree::Node& leaf, const GroupQuery& group, const RetrievalQuery& query, RetrievalResult& best) const;
     int candidate_count(int semantics, Side side) const; // over every cluster and limb
     void finish(RetrievalResult& result, const RetrievalQuery& query) const;
 
@@ -164,17 +185,27 @@ private:
     std::vector<ClipInfo> m_clips;
     std::vector<PoseInfo> m_poses;
     std::vector<float> m_cluster_radius;     // sqrt(radius / points)
-    // A candidate start as the search's inner loop reads it: contiguous per group, its clip's hit point at the hit
-    // frame in the start's heading frame divided by its actor's scale length, its distance to its centroid.
+    // A candidate start as the search's inner loop reads it: contiguous per group in its tree's order, its clip's
+    // hit point at the hit frame in the start's heading frame divided by its actor's scale length, its pose key,
+    // its distance to its centroid.
     struct Candidate {
         float hit_in_start[3];
+        float pose_key[k_pose_key_dimensions];
         float distance_to_centroid;
         std::uint32_t pose;
         std::uint32_t support_foot; // DbPoseFlags bit a leg strike needs planted, 0 for arm strikes
+        std::uint32_t start_flags;  // the start pose's DbPoseFlags (read here, not from the mapped file)
     };
-    std::vector<Candidate> m_candidates; // grouped by cluster, then order key
+    static constexpr int k_tree_dimensions = 3 + k_pose_key_dimensions; // hit point, then pose key
+    // The candidates' tree order, and where each group's tree starts.
+    void build_trees();
+
+    PoseKeyProjection m_key_projection;
+    int m_group_clusters = 1;                 // clusters with groups of their own: 1, or every cluster (trees_per_cluster)
+    std::vector<Candidate> m_candidates;      // grouped by cluster (when per cluster), then order key
     std::vector<std::uint32_t> m_group_begin; // [group], one more entry at the end
-    std::vector<AlignedBox> m_group_boxes;   // [group] in scale lengths
+    BoxTree m_trees{k_tree_dimensions};       // over (hit_in_start, pose_key)
+    std::vector<int> m_group_root;            // [group] its tree's root node, -1 when empty
     std::vector<int> m_order_counts;         // [order key] candidates over every cluster
     int m_order_keys = 0;
 };
