@@ -18,8 +18,9 @@ const CommandSpec& query_spec() {
         "query",
         "[DB.kdb] --character NAME (--target X,Y,Z | --targets FILE.csv) --command SEMANTICS [--side left|right|any] [--exhaustive] [--json]",
         "Retrieves the strike clip and start pose that suit a character standing at the origin, facing +Z, in\n"
-        "the database's guard pose, and a target in world metres (Y up). Clusters are searched nearest first with\n"
-        "exact bounds; --exhaustive scores every start of every clip instead (the slow reference).",
+        "the database's guard pose, and a target in world metres (Y up). A k-d tree of pose keys and hit points\n"
+        "is searched best bound first with exact bounds; --exhaustive scores every start of every clip instead (the\n"
+        "slow reference).",
         0, 1,
         {{"character", "NAME", "a character of data/characters (see kumite characters)"},
          {"target", "X,Y,Z", "the target, world metres"},
@@ -71,6 +72,7 @@ nlohmann::json result_json(const Retriever& retriever, const RetrievalResult& re
              {{"clusters_visited", result.counts.clusters_visited},
               {"candidates_seen", result.counts.candidates_seen},
               {"inside_box", result.counts.inside_box},
+              {"nodes_visited", result.counts.nodes_visited},
               {"pose_scored", result.counts.pose_scored},
               {"target_scored", result.counts.target_scored}}}};
 }
