@@ -40,7 +40,7 @@ const CommandSpec& play_spec() {
         {{"character", "NAME", "the starting character (default: the first of data/characters)"},
          {"fighters", "N", "fighters side by side against the same user (default 1)"},
          {"tracker", "SOURCE", "dtrack:PORT[:BODY] (no BODY: the only 6d body, else the 3d markers' centroid), replay:FILE.csv, or\n"
-                              "simulate:still|wander|dodge|FILE (a user script; default simulate:still)"},
+                              "simulate:still|wander|walk[:SPEED]|dodge|FILE (a user script; default simulate:still)"},
          {"tracker-config", "FILE.json", "the room: bind address, room-to-world transform, room bounds (dtrack)"},
          {"commands", "SOURCE", "stdin, tcp:PORT (127.0.0.1) or script:FILE ('<time_s> <command>' per line)"},
          {"headless", "", "no window"},
@@ -50,6 +50,8 @@ const CommandSpec& play_spec() {
          {"realtime", "", "step on the wall clock"},
          {"seed", "N", "seed of the simulated user (default 1)"},
          {"lead", "S", "the least time from an order's strike start to its contact (default 0.4 s)"},
+         {"aim", "latched|predicted", "strike the head where it was at the order (default), or where it will be at the contact\n"
+                                      "if it keeps its course (also the command 'aim latched|predicted' and the viewer's A key)"},
          {"record", "OUT.bvh", "the first fighter's motion on the starting character"},
          {"events", "OUT.jsonl", "one JSON object per event"},
          {"report", "OUT.json", "frames, frame times, orders, strikes, hits, misses, impacts, overshoot, joint-limit violations, tracker counts"},
@@ -97,6 +99,13 @@ nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
         line["clip"] = bout.database().string(bout.database().clips[event.clip].name);
         line["effector_speed_at_contact_mps"] = event.effector_speed_mps;
         line["outcome"] = event.impact ? "impact" : "follow_through";
+        line["aim"] = fighter_aim_name(event.aim);
+        line["target"] = {event.target.x(), event.target.y(), event.target.z()};
+        line["head_speed_mps"] = event.head_speed_mps;
+        line["prediction_error_m"] = event.prediction_error_m;
+        line["retrieval_offset_m"] = event.retrieval_offset_m;
+        line["target_part"] = target_part_name(event.target_part);
+        line["reachable"] = event.reachable;
         break;
     case FighterEvent::Type::strike_end:
         line["clip"] = bout.database().string(bout.database().clips[event.clip].name);
@@ -129,7 +138,12 @@ nlohmann::json play_report_json(const Bout& bout) {
             {"follow_throughs", counters.follow_throughs},
             {"overshoot_m", quantiles_of(counters.impact_overshoot_m)},
             {"effector_speed_at_contact_mps", quantiles_of(counters.contact_speed_mps)},
-            {"joint_limit_violations", counters.joint_limit_violations}};
+            {"joint_limit_violations", counters.joint_limit_violations},
+            {"aim", fighter_aim_name(bout.fighter(0).aim())},
+            {"by_aim",
+             {{"latched", {{"strikes", counters.latched_strikes}, {"hits", counters.latched_hits}}},
+              {"predicted", {{"strikes", counters.predicted_strikes}, {"hits", counters.predicted_hits}}}}},
+            {"prediction_error_m", quantiles_of(counters.prediction_error_m)}};
 }
 
 int run_play(int argc, char** argv) {
@@ -144,6 +158,12 @@ int run_play(int argc, char** argv) {
         char* end = nullptr;
         lead_s = std::strtod(text->c_str(), &end);
         if (end == text->c_str() || *end != '\0' || !(lead_s >= 0.0) || lead_s > 5.0) return usage_error(play_spec(), "--lead must be 0 to 5 seconds");
+    }
+    FighterAim aim = FighterAim::latched;
+    if (const std::optional<std::string> text = arguments.value("aim")) {
+        const std::optional<FighterAim> parsed = fighter_aim_from_name(*text);
+        if (!parsed) return usage_error(play_spec(), "--aim must be latched or predicted, not '" + *text + "'");
+        aim = *parsed;
     }
     double duration_s = 30.0;
     if (const std::optional<std::string> text = arguments.value("duration")) {
@@ -207,6 +227,7 @@ int run_play(int argc, char** argv) {
     BoutOptions options;
     options.fighters = static_cast<int>(*fighters_count);
     options.lead_s = lead_s;
+    options.fighter.aim = aim;
     options.record = arguments.value("record").has_value();
     options.start_character = -1;
     std::vector<BoutCharacter> characters;

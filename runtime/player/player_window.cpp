@@ -24,7 +24,7 @@ const KeyCommand k_keys[] = {{Qt::Key_1, "1", "punch"},      {Qt::Key_2, "2", "p
                              {Qt::Key_4, "4", "kick"},       {Qt::Key_5, "5", "kick left"},  {Qt::Key_6, "6", "kick right"}};
 
 const char* k_help =
-    "1/2/3 punch any/left/right   4/5/6 kick any/left/right   C next character\n"
+    "1/2/3 punch any/left/right   4/5/6 kick any/left/right   C next character   A aim latched / predicted\n"
     "V orbit / head-coupled   S mono / side-by-side   F frame   Space pause   Esc quit   mouse: orbit, pan, zoom";
 
 class PlayerWindow : public QWidget {
@@ -64,6 +64,9 @@ protected:
             send("character " + m_bout.character_name((fighter.character() + 1) % m_bout.character_count()));
             return;
         }
+        case Qt::Key_A:
+            send(std::string("aim ") + (m_bout.fighter(0).aim() == FighterAim::latched ? "predicted" : "latched"));
+            return;
         case Qt::Key_V:
             m_view->set_projection(m_view->projection() == Projection::orbit ? Projection::head_coupled : Projection::orbit);
             return;
@@ -168,8 +171,8 @@ private:
         char text[160];
         switch (e.type) {
         case FighterEvent::Type::strike:
-            std::snprintf(text, sizeof text, "%.1f s  fighter %d: %s, contact error %.1f cm", e.t_s, bout_event.fighter, e.hit ? "HIT" : "miss",
-                          e.contact_error_m * 100.0);
+            std::snprintf(text, sizeof text, "%.1f s  fighter %d: %s (%s, %s), contact error %.1f cm", e.t_s, bout_event.fighter,
+                          e.hit ? "HIT" : "miss", target_part_name(e.target_part), fighter_aim_name(e.aim), e.contact_error_m * 100.0);
             break;
         case FighterEvent::Type::ignored_order: std::snprintf(text, sizeof text, "%.1f s  order ignored: %s", e.t_s, e.why); break;
         case FighterEvent::Type::tracker_lost: std::snprintf(text, sizeof text, "%.1f s  tracker lost", e.t_s); break;
@@ -183,12 +186,13 @@ private:
         const BoutCounters& c = m_bout.counters();
         const Fighter& fighter = m_bout.fighter(0);
         const double last_us = c.frame_us.last();
-        QString lines = QString("%1  |  %2  |  %3 fps  |  frame %4 us  |  %5 fighter(s)\n")
+        QString lines = QString("%1  |  %2  |  aim %6  |  %3 fps  |  frame %4 us  |  %5 fighter(s)\n")
                             .arg(fighter_state_name(fighter.state()))
                             .arg(QString::fromStdString(m_bout.character_name(fighter.character())))
                             .arg(m_fps, 0, 'f', 0)
                             .arg(last_us, 0, 'f', 0)
-                            .arg(m_bout.fighter_count());
+                            .arg(m_bout.fighter_count())
+                            .arg(fighter_aim_name(fighter.aim()));
         lines += QString("strikes %1: %2 hits, %3 misses  |  last contact error %4  |  %5\n")
                      .arg(c.strikes)
                      .arg(c.hits)

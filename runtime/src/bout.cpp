@@ -110,6 +110,11 @@ void Bout::apply(std::string_view line, const std::string& where) {
         for (auto& fighter : m_fighters) fighter->set_character(index);
         break;
     }
+    case SupervisorCommand::Verb::aim: {
+        const FighterAim aim = fighter_aim_from_name(command->argument).value_or(FighterAim::latched);
+        for (auto& fighter : m_fighters) fighter->set_aim(aim);
+        break;
+    }
     case SupervisorCommand::Verb::quit: m_quit = true; break;
     }
 }
@@ -153,6 +158,9 @@ void Bout::step(double t_s) {
                 m_counters.last_contact_error_m = event.contact_error_m;
                 m_counters.last_hit = event.hit;
                 m_counters.contact_speed_mps.add(event.effector_speed_mps);
+                if (event.prediction_error_m < 1e8) m_counters.prediction_error_m.add(event.prediction_error_m);
+                (event.aim == FighterAim::predicted ? m_counters.predicted_strikes : m_counters.latched_strikes) += 1;
+                (event.aim == FighterAim::predicted ? m_counters.predicted_hits : m_counters.latched_hits) += event.hit;
                 break;
             case FighterEvent::Type::strike_end:
                 (event.impact ? m_counters.impacts : m_counters.follow_throughs) += 1;

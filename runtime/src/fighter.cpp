@@ -9,6 +9,10 @@
 namespace kumite {
 namespace {
 
+// The points a strike may aim at, highest first, and how far under a 1.65 m head they are.
+constexpr TargetPart k_target_parts[] = {TargetPart::head, TargetPart::chin, TargetPart::chest, TargetPart::solar_plexus};
+constexpr double k_target_drops_m[] = {0.0, 0.10, 0.30, 0.45};
+
 int first_clip_of(const MotionDatabaseView& db, std::string_view semantics) {
     for (std::size_t c = 0; c < db.clips.size(); ++c) {
         if (db.string(db.clips[c].semantics) == semantics) return static_cast<int>(c);
@@ -40,6 +44,24 @@ const char* fighter_state_name(FighterState state) {
     return "?";
 }
 
+const char* fighter_aim_name(FighterAim aim) { return aim == FighterAim::predicted ? "predicted" : "latched"; }
+
+std::optional<FighterAim> fighter_aim_from_name(std::string_view name) {
+    if (name == "latched") return FighterAim::latched;
+    if (name == "predicted") return FighterAim::predicted;
+    return std::nullopt;
+}
+
+const char* target_part_name(TargetPart part) {
+    switch (part) {
+    case TargetPart::head: return "head";
+    case TargetPart::chin: return "chin";
+    case TargetPart::chest: return "chest";
+    case TargetPart::solar_plexus: return "solar_plexus";
+    }
+    return "?";
+}
+
 const char* fighter_event_name(FighterEvent::Type type) {
     switch (type) {
     case FighterEvent::Type::order: return "order";
@@ -56,7 +78,8 @@ const char* fighter_event_name(FighterEvent::Type type) {
 
 Fighter::Fighter(const MotionDatabaseView& database, const Retriever& retriever, std::vector<CharacterRig*> characters,
                  FighterSettings settings)
-    : m_db(database), m_retriever(retriever), m_settings(settings), m_workspace(retriever.make_workspace()) {
+    : m_db(database), m_retriever(retriever), m_settings(settings), m_head_motion(settings.head_motion),
+      m_workspace(retriever.make_workspace()) {
     for (CharacterRig* character : characters) m_bodies.push_back(std::make_unique<Body>(character, database));
     m_guard_clip = first_clip_of(database, "rest");
     if (m_guard_clip < 0) m_guard_clip = 0; // a database without a guard: its first clip stands in
@@ -128,6 +151,8 @@ bool Fighter::order(int semantics, Side side) {
     event.side = side;
     push_event(event);
     m_pending = true;
+    m_pending_since_s = m_now_s;
+    m_pending_head = m_head;
     return true;
 }
 
@@ -162,6 +187,13 @@ double Fighter::leg_length() const { return m_bodies[m_character]->rig->anatomy(
 double Fighter::distance_to_user() const {
     const Eigen::Vector3d to_user = m_head - m_heading.origin;
     return Eigen::Vector2d(to_user.x(), to_user.z()).norm();
+}
+
+double Fighter::band_far_m() const {
+    // The far end comes in when the arms cannot reach the head from there, but the band stays a quarter leg wide
+    // so a shortened step lands inside it.
+    const double leg = leg_length(), near_m = m_settings.near_legs * leg;
+    return m_tracking ? std::clamp(strike_reach_m(), near_m + 0.25 * leg, m_settings.far_legs * leg) : m_settings.far_legs * leg;
 }
 
 HeadingFrame Fighter::heading_towards_user() const {
@@ -261,32 +293,69 @@ double Fighter::strike_reach_m() const {
     const Body& body = *m_bodies[m_character];
     const RestAnatomy& anatomy = body.rig->anatomy();
     const auto positions = body.decoder.model_positions();
-    double reach = 0.0;
-    for (const Limb arm : {Limb::arm_l, Limb::arm_r}) {
-        const LimbChain& limb = anatomy.limbs[int(arm)];
-        const Eigen::Vector3d shoulder = m_heading.to_heading(positions[limb.root]);
-        const double span = 0.9 * limb.length(), rise = m_head.y() - positions[limb.root].y();
-        if (std::abs(rise) < span) reach = std::max(reach, shoulder.z() + std::sqrt(span * span - rise * rise));
+    // At the head's height, else (reach fallback) at the highest body point under it the arms get to.
+    const double user_scale = std::clamp(m_head.y() / 1.65, 0.5, 1.4);
+    for (int part = 0; part < (m_settings.reach_fallback ? 4 : 1); ++part) {
+        const double height = m_head.y() - k_target_drops_m[part] * user_scale;
+        double reach = 0.0;
+        for (const Limb arm : {Limb::arm_l, Limb::arm_r}) {
+            const LimbChain& limb = anatomy.limbs[int(arm)];
+            const Eigen::Vector3d shoulder = m_heading.to_heading(positions[limb.root]);
+            const double span = 0.9 * limb.length(), rise = height - positions[limb.root].y();
+            if (std::abs(rise) < span) reach = std::max(reach, shoulder.z() + std::sqrt(span * span - rise * rise));
+        }
+        if (reach > 0.0) return reach + 0.1 * anatomy.leg_length;
     }
-    return reach > 0.0 ? reach + 0.1 * anatomy.leg_length : 0.0;
+    return 0.0;
 }
 
 void Fighter::start_strike(double t_s) {
-    m_pending = false;
     Body& body = *m_bodies[m_character];
     body.rig->measure(m_pose.view());
     body.rig->still_feature(m_feature);
     RetrievalQuery query;
     query.pose_feature = m_feature;
     query.heading = body.rig->heading();
-    query.target_world = m_head;
     query.semantics = m_pending_semantics;
     query.side = m_pending_side;
     query.character = body.rig->size();
-    const RetrievalResult found = m_retriever.query(query, m_workspace);
+    // The head, else the highest point of the body a strike reaches.
+    const double user_scale = std::clamp(m_head.y() / 1.65, 0.5, 1.4);
+    const int parts = m_settings.reach_fallback ? 4 : 1;
+    // An order may wait a little: for reach (the approach goes on meanwhile), and with predicted aim while the user
+    // is changing course (just turned, stopped or started: the extrapolation would be wrong).
+    const bool waiting_allowed = t_s - m_pending_since_s < m_settings.wait_for_reach_s;
+    if (m_settings.aim == FighterAim::predicted && waiting_allowed && m_head_motion.ready() && !m_head_motion.settled()) return;
+    RetrievalResult found;
+    Eigen::Vector3d target = m_head;
+    int part = 0;
+    bool reachable = false;
+    for (; part < parts; ++part) {
+        found = retrieve_strike(query, k_target_drops_m[part] * user_scale, target);
+        if (!found.found) break;
+        if (plan_strike(found, target) <= m_settings.reach_tolerance_m) {
+            reachable = true;
+            break;
+        }
+    }
+    if (found.found && !reachable) {
+        // Nothing reaches. When stepping in can help (a step is under way, or the user is beyond the band and the
+        // database has a step forward), the fighter steps in first and strikes when in reach; otherwise, or when
+        // that takes too long, it strikes at the head as the paper's fighter does.
+        const bool closer_helps = m_state == FighterState::approach || (m_step_clips[0] >= 0 && distance_to_user() > band_far_m());
+        if (waiting_allowed && closer_helps) return;
+        part = 0;
+        found = retrieve_strike(query, 0.0, target);
+        plan_strike(found, target);
+    }
+    m_pending = false;
     if (!found.found) return emit_ignored(t_s, "no strike of that kind can start from here");
-    m_plan = {found.clip, found.start_frame, found.contact_frame, found.clip_to_world, m_head};
-    m_strike_start = m_mir;
+    m_strike_part = k_target_parts[part];
+    m_strike_drop_m = k_target_drops_m[part] * user_scale;
+    m_strike_reachable = reachable;
+    m_strike_aim = m_settings.aim;
+    m_strike_head_speed_mps = m_head_motion.velocity().norm();
+    m_strike_offset_m = found.d_target_m;
     m_strike_start_s = t_s;
     m_contact_done = false;
     m_strike_overshoot_m = 0.0;
@@ -296,8 +365,34 @@ void Fighter::start_strike(double t_s) {
     m_strike_semantics = m_pending_semantics;
     m_strike_side = m_pending_side;
     m_strike_range_m = distance_to_user();
+    enter(FighterState::strike, t_s); // plan_strike began the adaptation
+}
+
+RetrievalResult Fighter::retrieve_strike(RetrievalQuery& query, double drop_m, Eigen::Vector3d& target) {
+    const Eigen::Vector3d drop(0.0, drop_m, 0.0);
+    target = m_pending_head - drop; // latched: where the head was at the order
+    query.target_world = target;
+    RetrievalResult found = m_retriever.query(query, m_workspace);
+    if (m_settings.aim != FighterAim::predicted || !m_head_motion.ready()) return found;
+    // The contact time depends on the strike, and the strike on the target: a few rounds settle both (each moves
+    // the target by the head's speed times the change of contact time; they stop within a centimetre).
+    for (int round = 0; round < 3 && found.found; ++round) {
+        const Eigen::Vector3d predicted = m_head_motion.predict(found.time_to_contact_s) - drop;
+        if ((predicted - target).norm() < 0.01) break;
+        target = predicted;
+        query.target_world = target;
+        found = m_retriever.query(query, m_workspace);
+    }
+    return found;
+}
+
+double Fighter::plan_strike(const RetrievalResult& found, const Eigen::Vector3d& target) {
+    if (!found.found) return 1e9;
+    m_plan = {found.clip, found.start_frame, found.contact_frame, found.clip_to_world, target};
+    m_strike_start = m_mir;
+    m_strike_impact = true;
     begin_strike();
-    enter(FighterState::strike, t_s);
+    return (m_bodies[m_character]->adapter.stop_point() - target).norm();
 }
 
 void Fighter::begin_strike() {
@@ -318,6 +413,12 @@ FighterEvent Fighter::strike_event(FighterEvent::Type type, double t_s) const {
     event.side = m_strike_side;
     event.clip = m_plan.clip;
     event.impact = m_strike_impact;
+    event.aim = m_strike_aim;
+    event.target = m_plan.target_world;
+    event.head_speed_mps = m_strike_head_speed_mps;
+    event.retrieval_offset_m = m_strike_offset_m;
+    event.target_part = m_strike_part;
+    event.reachable = m_strike_reachable;
     return event;
 }
 
@@ -334,7 +435,7 @@ void Fighter::play_strike(double t_s) {
     // strike follows through from this frame on.
     const bool at_contact = !m_contact_done && index >= contact;
     if (at_contact) {
-        m_strike_impact = m_tracking && (m_head - m_plan.target_world).norm() <= m_settings.hit_radius_m;
+        m_strike_impact = m_tracking && (aimed_point_now() - m_plan.target_world).norm() <= m_settings.hit_radius_m;
         adapter.set_impact(m_strike_impact);
     }
     const AdaptedFrame frame = adapter.step(index, m_pose);
@@ -344,8 +445,9 @@ void Fighter::play_strike(double t_s) {
         m_contact_done = true;
         FighterEvent event = strike_event(FighterEvent::Type::strike, t_s);
         event.contact_error_m = (frame.effector - m_plan.target_world).norm();
-        event.head_distance_m = m_tracking ? (frame.effector - m_head).norm() : 1e9;
+        event.head_distance_m = m_tracking ? (frame.effector - aimed_point_now()).norm() : 1e9;
         event.hit = event.head_distance_m <= m_settings.hit_radius_m;
+        event.prediction_error_m = m_tracking ? (aimed_point_now() - m_plan.target_world).norm() : 1e9;
         event.range_m = m_strike_range_m;
         if (m_previous_effector_s >= 0.0 && t_s > m_previous_effector_s) {
             event.effector_speed_mps = (frame.effector - m_previous_effector).norm() / (t_s - m_previous_effector_s);
@@ -385,6 +487,7 @@ void Fighter::step(double t_s, const Eigen::Vector3d* head) {
     if (head) {
         m_head = *head;
         m_last_head_s = t_s;
+        m_head_motion.update(t_s, m_head);
         if (!m_tracking && m_have_head) {
             FighterEvent event;
             event.type = FighterEvent::Type::tracker_back;
@@ -398,6 +501,7 @@ void Fighter::step(double t_s, const Eigen::Vector3d* head) {
         m_have_head = m_tracking = true;
     } else if (m_tracking && t_s - m_last_head_s > m_settings.tracker_timeout_s) {
         m_tracking = false;
+        m_head_motion.reset();
         FighterEvent event;
         event.type = FighterEvent::Type::tracker_lost;
         event.t_s = t_s;
@@ -433,10 +537,8 @@ void Fighter::step(double t_s, const Eigen::Vector3d* head) {
 
     const DbClip& clip = m_db.clips[m_clip];
     const bool clip_over = t_s - m_clip_start_s >= (clip.frame_count - 1) * double(m_db.meta.frame_time_s);
-    // The band where strikes reach: its far end comes in when the arms cannot reach the head from there, but the
-    // band stays a quarter leg wide so a shortened step lands inside it.
-    const double leg = leg_length(), near_m = m_settings.near_legs * leg;
-    const double far_m = m_tracking ? std::clamp(strike_reach_m(), near_m + 0.25 * leg, m_settings.far_legs * leg) : m_settings.far_legs * leg;
+    // The band where strikes reach.
+    const double leg = leg_length(), near_m = m_settings.near_legs * leg, far_m = band_far_m();
     // Resting out of range: step without waiting for the guard loop to end.
     const bool out_of_range = m_state == FighterState::rest && m_tracking && t_s - m_state_since_s >= m_settings.blend_s &&
                               (distance_to_user() > far_m || distance_to_user() < near_m);

@@ -10,14 +10,21 @@ Result<std::unique_ptr<HeadTracker>> HeadTracker::open(std::string_view spec_vie
     std::unique_ptr<HeadTracker> tracker(new HeadTracker());
     if (spec.starts_with("simulate:")) {
         const std::string name = spec.substr(9);
-        if (const std::optional<SimulatedKind> kind = simulated_kind_from_name(name)) {
+        double walk_speed = 0.8;
+        char extra = 0;
+        if (name.starts_with("walk:")) {
+            if (std::sscanf(name.c_str() + 5, "%lf%c", &walk_speed, &extra) != 1 || !(walk_speed > 0.0) || walk_speed > 3.0) {
+                return make_error(ErrorCode::invalid, "--tracker simulate:walk:SPEED takes metres per second, more than 0 and at most 3, not '" + name + "'");
+            }
+            tracker->m_simulated.emplace(SimulatedKind::walk, seed, walk_speed);
+        } else if (const std::optional<SimulatedKind> kind = simulated_kind_from_name(name)) {
             tracker->m_simulated.emplace(*kind, seed);
         } else if (std::filesystem::is_regular_file(name)) {
             Result<ScriptedUser> read = ScriptedUser::read(name);
             if (!read) return read.error();
             tracker->m_scripted = std::move(*read);
         } else {
-            return make_error(ErrorCode::invalid, "--tracker simulate: takes still, wander, dodge or a user script file, not '" + name + "'");
+            return make_error(ErrorCode::invalid, "--tracker simulate: takes still, wander, walk[:SPEED], dodge or a user script file, not '" + name + "'");
         }
     } else if (spec.starts_with("dtrack:")) {
         int port = 0, body = config.head_body;

@@ -20,11 +20,13 @@ double dodge_amount(double since) {
 std::optional<SimulatedKind> simulated_kind_from_name(std::string_view name) {
     if (name == "still") return SimulatedKind::still;
     if (name == "wander") return SimulatedKind::wander;
+    if (name == "walk") return SimulatedKind::walk;
     if (name == "dodge") return SimulatedKind::dodge;
     return std::nullopt;
 }
 
-SimulatedUser::SimulatedUser(SimulatedKind kind, std::uint64_t seed) : m_kind(kind), m_random{seed} {}
+SimulatedUser::SimulatedUser(SimulatedKind kind, std::uint64_t seed, double walk_speed_mps)
+    : m_kind(kind), m_random{seed}, m_walk_speed_mps(walk_speed_mps) {}
 
 void SimulatedUser::on_order(double t_s) {
     if (m_kind != SimulatedKind::dodge) return;
@@ -36,11 +38,16 @@ Eigen::Vector3d SimulatedUser::head(double t_s) {
     const Eigen::Vector3d start = start_position();
     switch (m_kind) {
     case SimulatedKind::still: return start;
-    case SimulatedKind::wander: {
-        constexpr double speed = 0.4;
+    case SimulatedKind::wander:
+    case SimulatedKind::walk: {
+        const bool walk = m_kind == SimulatedKind::walk;
+        const double speed = walk ? m_walk_speed_mps : 0.4;
         while (t_s >= m_leg_end_s) {
             m_from = m_to;
-            m_to = Eigen::Vector3d(m_random.uniform(-1.5, 1.5), k_head_height_m, start.z() + m_random.uniform(-1.0, 1.5));
+            for (int attempt = 0; attempt < 20; ++attempt) { // a walk's legs are long enough to be walks, not turns
+                m_to = Eigen::Vector3d(m_random.uniform(-1.5, 1.5), k_head_height_m, start.z() + m_random.uniform(-1.0, 1.5));
+                if (!walk || (m_to - m_from).norm() >= 1.5) break;
+            }
             m_leg_start_s = m_leg_end_s;
             m_leg_end_s = m_leg_start_s + std::max(0.5, (m_to - m_from).norm() / speed);
         }

@@ -43,11 +43,17 @@ Result<SupervisorCommand> supervisor_command_parse(std::string_view line) {
         if (argument.empty()) return make_error(ErrorCode::invalid, "character needs a NAME");
         command.verb = SupervisorCommand::Verb::character;
         command.argument = argument;
+    } else if (verb == "aim") {
+        if (argument != "latched" && argument != "predicted") {
+            return make_error(ErrorCode::invalid, "aim must be latched or predicted, not '" + std::string(argument) + "'");
+        }
+        command.verb = SupervisorCommand::Verb::aim;
+        command.argument = argument;
     } else if (verb == "quit") {
         if (!argument.empty()) return make_error(ErrorCode::invalid, "quit takes nothing");
         command.verb = SupervisorCommand::Verb::quit;
     } else {
-        return make_error(ErrorCode::invalid, "unknown command '" + std::string(verb) + "' (punch, kick, character, quit)");
+        return make_error(ErrorCode::invalid, "unknown command '" + std::string(verb) + "' (punch, kick, character, aim, quit)");
     }
     return command;
 }

@@ -26,11 +26,11 @@ struct Bout {
     std::unique_ptr<Fighter> fighter;
     std::vector<FighterEvent> events;
 
-    explicit Bout(const MotionDatabaseView& database, const std::string& first = "brawler")
+    explicit Bout(const MotionDatabaseView& database, const std::string& first = "brawler", FighterSettings fighter_settings = {})
         : db(database), brawler(first, database), giant("giant", database) {
         settings.min_lead_frames = 12; // 0.4 s, as kumite play
         retriever = std::make_unique<Retriever>(db, settings);
-        fighter = std::make_unique<Fighter>(db, *retriever, std::vector<CharacterRig*>{brawler.rig.get(), giant.rig.get()});
+        fighter = std::make_unique<Fighter>(db, *retriever, std::vector<CharacterRig*>{brawler.rig.get(), giant.rig.get()}, fighter_settings);
     }
     // Steps frames [from, to) at 60 Hz with the head from `head(t)` (null: no head).
     template <class Head>
@@ -52,9 +52,10 @@ struct Bout {
 };
 
 // A bout of 40 s with an order every 2.5 s from t = 4 s against a simulated user.
-std::vector<FighterEvent> bout(const MotionDatabaseView& db, SimulatedKind kind, std::uint64_t seed, const std::string& character = "brawler") {
-    Bout b(db, character);
-    SimulatedUser user(kind, seed);
+std::vector<FighterEvent> bout(const MotionDatabaseView& db, SimulatedKind kind, std::uint64_t seed, const std::string& character = "brawler",
+                               FighterSettings settings = {}, double walk_speed_mps = 0.8) {
+    Bout b(db, character, settings);
+    SimulatedUser user(kind, seed, walk_speed_mps);
     int orders = 0;
     for (int frame = 0; frame < 40 * 60; ++frame) {
         const double t = frame / 60.0;
@@ -71,7 +72,63 @@ std::vector<FighterEvent> bout(const MotionDatabaseView& db, SimulatedKind kind,
     return b.events;
 }
 
+struct Tally {
+    int orders = 0, strikes = 0, hits = 0, head_aimed = 0, reachable = 0;
+    explicit Tally(const std::vector<FighterEvent>& events) {
+        for (const FighterEvent& e : events) {
+            orders += e.type == FighterEvent::Type::order;
+            if (e.type != FighterEvent::Type::strike) continue;
+            ++strikes;
+            hits += e.hit;
+            head_aimed += e.target_part == TargetPart::head;
+            reachable += e.reachable;
+        }
+    }
+};
+
 } // namespace
+
+TEST_CASE("fighter: predicted aim hits a walking user, latched aim does not, neither a dodging one", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    if (!content) return;
+    FighterSettings latched, predicted;
+    predicted.aim = FighterAim::predicted;
+    for (double speed : {0.5, 1.2}) {
+        const Tally leading(bout(content->view(), SimulatedKind::walk, 3, "brawler", predicted, speed));
+        const Tally behind(bout(content->view(), SimulatedKind::walk, 3, "brawler", latched, speed));
+        INFO(speed << " m/s: predicted " << leading.hits << "/" << leading.strikes << ", latched " << behind.hits << "/" << behind.strikes);
+        CHECK(leading.strikes >= 8);
+        CHECK(leading.hits >= 0.7 * leading.strikes);
+        CHECK(behind.hits <= 0.2 * behind.strikes);
+    }
+    const Tally dodged(bout(content->view(), SimulatedKind::dodge, 3, "brawler", predicted));
+    CHECK(dodged.strikes == 15);
+    CHECK(dodged.hits <= 0.1 * dodged.strikes);
+}
+
+TEST_CASE("fighter: a fighter that cannot reach the head strikes the highest body point it reaches", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    if (!content) return;
+    // The kid (1.30 m) against a 1.65 m head: every strike lands on the body, none is aimed at the head.
+    const Tally kid(bout(content->view(), SimulatedKind::still, 5, "kid"));
+    INFO("kid: " << kid.hits << "/" << kid.strikes << ", " << kid.head_aimed << " at the head");
+    CHECK(kid.strikes == 15);
+    CHECK(kid.hits >= 0.9 * kid.strikes);
+    CHECK(kid.reachable == kid.strikes);
+    CHECK(kid.head_aimed <= 1);
+    // The fallback off: each order waits for a reach it never gets (orders meanwhile are refused), then strikes at
+    // the head, and misses.
+    FighterSettings head_only;
+    head_only.reach_fallback = false;
+    const Tally stubborn(bout(content->view(), SimulatedKind::still, 5, "kid", head_only));
+    CHECK(stubborn.strikes >= 5);
+    CHECK(stubborn.reachable == 0);
+    CHECK(stubborn.head_aimed == stubborn.strikes);
+    CHECK(stubborn.hits <= 0.2 * stubborn.strikes);
+    // A fighter that reaches the head still aims at it.
+    const Tally brawler(bout(content->view(), SimulatedKind::still, 5, "brawler"));
+    CHECK(brawler.head_aimed == brawler.strikes);
+}
 
 TEST_CASE("fighter: a still user is hit, a dodging one missed, every order strikes", "[runtime][corpus]") {
     const MotionDatabaseContent* content = reference_database();

@@ -23,7 +23,9 @@ TEST_CASE("supervisor: command lines are parsed, bad ones explained", "[runtime]
     CHECK(supervisor_command_parse("  kick\r")->side.empty());
     CHECK(supervisor_command_parse("character giant")->argument == "giant");
     CHECK(supervisor_command_parse("quit")->verb == SupervisorCommand::Verb::quit);
-    for (const char* bad : {"", "punch up", "kick left now", "character", "quit now", "dance"}) {
+    CHECK(supervisor_command_parse("aim predicted")->verb == SupervisorCommand::Verb::aim);
+    CHECK(supervisor_command_parse("aim latched")->argument == "latched");
+    for (const char* bad : {"", "punch up", "kick left now", "character", "quit now", "dance", "aim", "aim ahead"}) {
         INFO(bad);
         const Result<SupervisorCommand> parsed = supervisor_command_parse(bad);
         REQUIRE_FALSE(parsed.has_value());

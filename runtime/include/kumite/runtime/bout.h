@@ -47,6 +47,8 @@ struct BoutCounters {
     ValueHistogram contact_speed_mps{1e-3, 1e3};   // per strike: the hit point's speed arriving at the contact
     long long joint_limit_violations = 0;       // summed over strikes and frames
     long long impacts = 0, follow_throughs = 0; // strikes that stopped at the target, strikes the user dodged
+    ValueHistogram prediction_error_m{1e-4, 100.0}; // per strike: the head at the contact to the target aimed at
+    long long latched_strikes = 0, latched_hits = 0, predicted_strikes = 0, predicted_hits = 0; // by aim
     double last_contact_error_m = -1.0;         // of the last strike; -1 before any
     bool last_hit = false;
 };

@@ -1,6 +1,7 @@
 #pragma once
 // The fighter (ARCHITECTURE.md step 7): a character that guards, steps to keep the user in striking range while
-// facing them, strikes on order at the head as it was when the order came (the target is latched), and tells a
+// facing them, strikes on order at the head as it was when the order came (the target is latched; or, with
+// predicted aim, where the head will be at the strike's contact if it keeps its course), and tells a
 // hit from a miss by where the head is at the contact frame. A strike whose target the head is still at when it
 // lands stops there (impact); one the user has dodged follows through, a visible miss. It owns its workspace and steps at a fixed rate; after
 // construction a step allocates nothing. Several fighters can run side by side, one object each.
@@ -15,14 +16,29 @@
 // strike carries on, decoded on the new character.
 
 #include "kumite/core/strike_adaptation.h"
+#include "kumite/runtime/head_motion_filter.h"
 
 #include <memory>
+#include <optional>
+#include <string_view>
 #include <vector>
 
 namespace kumite {
 
 enum class FighterState { rest, approach, strike, recover, hold };
 const char* fighter_state_name(FighterState state);
+
+// Where a strike aims: the head as it was at the order (the paper), or where it will be at the strike's contact,
+// extrapolated from its filtered velocity (a user who keeps walking is hit; one who stops, turns or ducks is not).
+enum class FighterAim { latched, predicted };
+const char* fighter_aim_name(FighterAim aim);
+std::optional<FighterAim> fighter_aim_from_name(std::string_view name);
+
+// The point of the user a strike aims at. The head first; when no strike reaches it (a short fighter, a tall
+// user), the highest of chin, chest and solar plexus one does: points below the head by the user's proportions
+// (0.10, 0.30 and 0.45 m under a 1.65 m head, scaled by the head's height), moving with the head.
+enum class TargetPart { head, chin, chest, solar_plexus };
+const char* target_part_name(TargetPart part);
 
 struct FighterSettings {
     double rate_hz = 60.0;
@@ -37,6 +53,12 @@ struct FighterSettings {
     double blend_s = 0.2;
     double recover_s = 0.3;
     double start_x_m = 0.0;          // where the fighter starts on the floor: x, facing +Z (side by side)
+    FighterAim aim = FighterAim::latched;
+    HeadMotionSettings head_motion;  // the filter behind predicted aim
+    bool reach_fallback = true;      // aim lower on the body when the head is out of reach (else strike at the head)
+    double reach_tolerance_m = 0.05; // a strike reaches a point when its adaptation gets the hit point this close
+    double wait_for_reach_s = 1.5;   // an order no strike reaches waits this long for the fighter to step in (the
+                                     // target stays latched), then strikes at the head anyway
 };
 
 struct FighterEvent {
@@ -56,6 +78,13 @@ struct FighterEvent {
                                              // the contact, so the strike stops there; false: it follows through
     double overshoot_m = 0.0;                // strike_end events: the farthest past the target after the contact
     int joint_limit_violations = 0;          // strike_end events: joints out of limits, summed over the frames
+    FighterAim aim = FighterAim::latched;    // strike events: how the target was chosen
+    Eigen::Vector3d target = Eigen::Vector3d::Zero(); // strike events: the target aimed at, world
+    double head_speed_mps = 0.0;             // strike events: the head's filtered speed when the strike began
+    double prediction_error_m = 0.0;         // strike events: the head at the contact to the target aimed at
+    double retrieval_offset_m = 0.0;         // strike events: the chosen clip's natural hit point to the target
+    TargetPart target_part = TargetPart::head; // strike events: the part aimed at
+    bool reachable = true;                   // strike events: the adaptation gets the hit point to the target
     int character = -1;                      // character events
     const char* why = "";                    // ignored orders
 };
@@ -75,6 +104,8 @@ public:
     // (the tracker has no head, nothing fits) is ignored then, with an event.
     bool order(int semantics, Side side);
     void set_character(int index);
+    void set_aim(FighterAim aim) { m_settings.aim = aim; } // from the next strike on
+    FighterAim aim() const { return m_settings.aim; }
 
     // One frame at time t (seconds). `head`: the user's head this frame, or null when the tracker has none.
     void step(double t_s, const Eigen::Vector3d* head);
@@ -92,7 +123,8 @@ public:
     double leg_length() const; // of the current character
     // How far from the pelvis (horizontally, metres) the arms reach the user's head from the current pose: the
     // shoulder's lead plus what 90% of the arm spans at the head's height above the shoulder, plus a lean of
-    // 0.1 leg lengths. Zero reach when the head is beyond the arms (a kid against an adult).
+    // 0.1 leg lengths. When the head is beyond the arms (a kid against an adult), the same at the highest body
+    // point under it that they reach (reach_fallback); zero when none.
     double strike_reach_m() const;
 
     std::span<const FighterEvent> events() const { return {m_events.data(), std::size_t(m_event_count)}; }
@@ -115,6 +147,14 @@ private:
     bool order_fits(int semantics, const char*& why) const;
     HeadingFrame heading_towards_user() const;
     double distance_to_user() const; // horizontal, pelvis to head
+    double band_far_m() const;       // the far end of the distance band where strikes reach
+    // The point the strike aims at, where the user has it now (the head, or the body point under it).
+    Eigen::Vector3d aimed_point_now() const { return m_head - Eigen::Vector3d(0.0, m_strike_drop_m, 0.0); }
+    // The strike for the pending order at the point `drop_m` under the head, where aim asks for (as it is, or as
+    // it will be at the contact); the target used in `target`.
+    RetrievalResult retrieve_strike(RetrievalQuery& query, double drop_m, Eigen::Vector3d& target);
+    // Plans the strike and begins its adaptation: how far from the target the hit point stops at the contact.
+    double plan_strike(const RetrievalResult& found, const Eigen::Vector3d& target);
 
     MotionDatabaseView m_db;
     const Retriever& m_retriever;
@@ -133,10 +173,13 @@ private:
     bool m_tracking = false;
     Eigen::Vector3d m_head = Eigen::Vector3d::Zero();
     double m_last_head_s = -1e9;
+    HeadMotionFilter m_head_motion;
     // orders
     bool m_pending = false;
     int m_pending_semantics = -1;
     Side m_pending_side = Side::none;
+    double m_pending_since_s = 0.0;
+    Eigen::Vector3d m_pending_head = Eigen::Vector3d::Zero(); // the head at the order (latched aim)
     // the clip being played (rest, approach, recover)
     int m_clip = -1;
     double m_clip_start_s = 0.0;
@@ -161,6 +204,12 @@ private:
     double m_strike_overshoot_m = 0.0;
     int m_strike_violations = 0;
     bool m_strike_impact = true;
+    FighterAim m_strike_aim = FighterAim::latched;
+    double m_strike_head_speed_mps = 0.0;
+    double m_strike_offset_m = 0.0;
+    double m_strike_drop_m = 0.0;            // the aimed point under the head
+    TargetPart m_strike_part = TargetPart::head;
+    bool m_strike_reachable = true;
     Eigen::Vector3d m_previous_effector = Eigen::Vector3d::Zero();
     double m_previous_effector_s = 0.0;
     // output

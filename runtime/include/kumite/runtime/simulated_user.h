@@ -3,6 +3,7 @@
 // facing +Z; the user stands 1.5 m in front of it, facing it, head 1.65 m up.
 //   still  — stands there.
 //   wander — walks slowly (0.4 m/s) between random points of a 3 m x 3 m room centred on its start.
+//   walk   — the same at a given speed (default 0.8 m/s; `simulate:walk:1.2`), legs at least 1.5 m long.
 //   dodge  — like still, but 0.25 s after each order ducks 0.45 m or sidesteps 0.5 m (alternately) for 1 s.
 
 #include <Eigen/Core>
@@ -18,12 +19,12 @@
 
 namespace kumite {
 
-enum class SimulatedKind { still, wander, dodge };
+enum class SimulatedKind { still, wander, walk, dodge };
 std::optional<SimulatedKind> simulated_kind_from_name(std::string_view name);
 
 class SimulatedUser {
 public:
-    SimulatedUser(SimulatedKind kind, std::uint64_t seed);
+    SimulatedUser(SimulatedKind kind, std::uint64_t seed, double walk_speed_mps = 0.8);
 
     Eigen::Vector3d head(double t_s); // call with non-decreasing times
     void on_order(double t_s);        // the supervisor gave an order at t
@@ -34,6 +35,7 @@ public:
 private:
     SimulatedKind m_kind;
     SplitMix64 m_random;
+    double m_walk_speed_mps = 0.8;
     // wander: the current leg of the walk
     Eigen::Vector3d m_from = start_position(), m_to = start_position();
     double m_leg_start_s = 0.0, m_leg_end_s = 0.0;
