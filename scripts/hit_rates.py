@@ -1,0 +1,61 @@
+#!/usr/bin/env python3
+"""Hit rates per character, simulated user and aim mode: headless `kumite play` bouts with an order every 2 s
+(punch and kick alternately, sides alternating), read from each bout's report. Prints one JSON document.
+
+  scripts/hit_rates.py [--db DB.kdb] [--seconds 60] [--users still,walk:0.5,walk:1.2,dodge] [--aims latched,predicted]
+                       [--characters kid,scout,brawler,runner,giant] [--seed 1]
+"""
+import argparse
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--db", default=None, help="database (default: kumite's default database)")
+    parser.add_argument("--seconds", type=float, default=60.0)
+    parser.add_argument("--users", default="still,walk:0.5,walk:0.8,walk:1.2,dodge")
+    parser.add_argument("--aims", default="latched,predicted")
+    parser.add_argument("--characters", default="kid,scout,brawler,runner,giant")
+    parser.add_argument("--seed", type=int, default=1)
+    parser.add_argument("--kumite", default=os.path.join(root, "build", "bin", "kumite"))
+    args = parser.parse_args()
+
+    with tempfile.TemporaryDirectory() as work:
+        script = os.path.join(work, "orders.txt")
+        with open(script, "w") as out:
+            t, n = 1.0, 0
+            while t < args.seconds - 1.0:
+                out.write(f"{t:.2f} {'punch' if n % 2 == 0 else 'kick'} {'left' if (n // 2) % 2 == 0 else 'right'}\n")
+                t += 2.0
+                n += 1
+        table = {}
+        for user in args.users.split(","):
+            for aim in args.aims.split(","):
+                row = {"strikes": 0, "hits": 0, "by_character": {}}
+                for character in args.characters.split(","):
+                    report = os.path.join(work, "report.json")
+                    command = [args.kumite, "play"] + ([args.db] if args.db else []) + [
+                        "--headless", "--duration", str(args.seconds), "--tracker", f"simulate:{user}", "--character", character,
+                        "--commands", f"script:{script}", "--aim", aim, "--seed", str(args.seed), "--report", report]
+                    done = subprocess.run(command, capture_output=True, text=True)
+                    if done.returncode != 0:
+                        sys.exit(f"hit_rates: {' '.join(command)} failed: {done.stderr.strip()}")
+                    figures = json.load(open(report))
+                    row["strikes"] += figures["strikes"]
+                    row["hits"] += figures["hits"]
+                    row["by_character"][character] = {"orders": figures["orders"], "strikes": figures["strikes"], "hits": figures["hits"],
+                                                      "prediction_error_m": figures["prediction_error_m"]["median"]}
+                row["hit_rate"] = row["hits"] / max(1, row["strikes"])
+                table.setdefault(user, {})[aim] = row
+                print(f"{user:10s} {aim:9s} {row['hits']}/{row['strikes']} = {row['hit_rate']:.2f}", file=sys.stderr)
+    print(json.dumps({"seconds": args.seconds, "order_every_s": 2.0, "hit_rates": table}, indent=2))
+
+
+if __name__ == "__main__":
+    main()
