@@ -153,6 +153,8 @@ bool Fighter::order(int semantics, Side side) {
     m_pending = true;
     m_pending_since_s = m_now_s;
     m_pending_head = m_head;
+    m_pending_tried = false;
+    m_pending_part = 0;
     return true;
 }
 
@@ -326,11 +328,14 @@ void Fighter::start_strike(double t_s) {
     // is changing course (just turned, stopped or started: the extrapolation would be wrong).
     const bool waiting_allowed = t_s - m_pending_since_s < m_settings.wait_for_reach_s;
     if (m_settings.aim == FighterAim::predicted && waiting_allowed && m_head_motion.ready() && !m_head_motion.settled()) return;
+    // The first try looks at every part; while the order waits, one part per frame, in turn from the head down
+    // (each look is a retrieval and the adaptation's planning: a hundred fighters waiting at once stay cheap).
+    const int first = m_pending_tried ? m_pending_part : 0, last = m_pending_tried ? first + 1 : parts;
     RetrievalResult found;
     Eigen::Vector3d target = m_head;
-    int part = 0;
+    int part = first;
     bool reachable = false;
-    for (; part < parts; ++part) {
+    for (; part < last; ++part) {
         found = retrieve_strike(query, k_target_drops_m[part] * user_scale, target);
         if (!found.found) break;
         if (plan_strike(found, target) <= m_settings.reach_tolerance_m) {
@@ -343,7 +348,18 @@ void Fighter::start_strike(double t_s) {
         // database has a step forward), the fighter steps in first and strikes when in reach; otherwise, or when
         // that takes too long, it strikes at the head as the paper's fighter does.
         const bool closer_helps = m_state == FighterState::approach || (m_step_clips[0] >= 0 && distance_to_user() > band_far_m());
-        if (waiting_allowed && closer_helps) return;
+        // ... and when steps at the step clip's pace can close the gap in the time left to wait.
+        const double step_speed_mps = clip_stride_m(m_step_clips[0]) /
+                                      std::max(1e-3, (m_db.clips[std::max(0, m_step_clips[0])].frame_count - 1) * double(m_db.meta.frame_time_s));
+        const double time_left_s = m_settings.wait_for_reach_s - (t_s - m_pending_since_s);
+        const bool in_time = distance_to_user() - band_far_m() < step_speed_mps * time_left_s;
+        // A walking user may also come within reach by themselves: predicted aim watches for it.
+        const bool user_may_come = m_settings.aim == FighterAim::predicted && m_head_motion.velocity().norm() > 0.2;
+        if (waiting_allowed && closer_helps && (in_time || user_may_come)) {
+            m_pending_tried = true;
+            m_pending_part = last % parts;
+            return;
+        }
         part = 0;
         found = retrieve_strike(query, 0.0, target);
         plan_strike(found, target);

@@ -180,6 +180,8 @@ private:
     Side m_pending_side = Side::none;
     double m_pending_since_s = 0.0;
     Eigen::Vector3d m_pending_head = Eigen::Vector3d::Zero(); // the head at the order (latched aim)
+    bool m_pending_tried = false; // every part was looked at once: the order waits for reach
+    int m_pending_part = 0;       // the part to look at next while waiting
     // the clip being played (rest, approach, recover)
     int m_clip = -1;
     double m_clip_start_s = 0.0;
