@@ -82,6 +82,15 @@ void player_scene_build(const Bout& bout, Scene& scene) {
         sphere.color = {0.9f, 0.85f, 0.75f};
         scene.spheres.push_back(sphere);
     }
+    const UserHands& hands = bout.hands();
+    for (int side = 0; side < 2; ++side) {
+        if (!hands.present[side]) continue;
+        Sphere sphere;
+        sphere.center = hands.world[side].cast<float>();
+        sphere.radius_m = 0.05f;
+        sphere.color = side == 0 ? Eigen::Vector3f(0.95f, 0.6f, 0.35f) : Eigen::Vector3f(0.35f, 0.75f, 0.95f);
+        scene.spheres.push_back(sphere);
+    }
 }
 
 } // namespace kumite::view

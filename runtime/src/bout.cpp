@@ -123,6 +123,9 @@ void Bout::step(double t_s) {
     const auto started = std::chrono::steady_clock::now();
     m_now_s = t_s;
     m_events.clear();
+    // Simulated users punch at the first fighter as it was last frame.
+    const Fighter& first = *m_fighters.front();
+    m_tracker->set_opponent(first.part_position(BodyPart::head), first.part_position(BodyPart::chest));
     const Eigen::Vector3d* head = m_tracker->head(t_s);
     if (const char* notice = m_tracker->take_notice()) {
         if (m_stream) m_stream->reply(notice);
@@ -138,7 +141,7 @@ void Bout::step(double t_s) {
     const long long frame = m_counters.frames;
     for (std::size_t f = 0; f < m_fighters.size(); ++f) {
         Fighter& fighter = *m_fighters[f];
-        fighter.step(t_s, m_have_head ? &m_head : nullptr);
+        fighter.step(t_s, m_have_head ? &m_head : nullptr, &m_tracker->hands());
         for (const FighterEvent& event : fighter.events()) {
             switch (event.type) {
             case FighterEvent::Type::order:

@@ -39,7 +39,8 @@ Result<DtrackConfig> dtrack_config_read(const std::string& path) {
         if (!document["bind"].is_string()) return make_error(ErrorCode::invalid, path + ": \"bind\" must be an address string");
         config.bind_address = document["bind"].get<std::string>();
     }
-    for (auto [key, target] : {std::pair{"port", &config.port}, std::pair{"head_body", &config.head_body}}) {
+    for (auto [key, target] : {std::pair{"port", &config.port}, std::pair{"head_body", &config.head_body},
+                               std::pair{"left_hand", &config.hand_ids[0]}, std::pair{"right_hand", &config.hand_ids[1]}}) {
         if (!document.contains(key)) continue;
         if (!document[key].is_number_integer()) return make_error(ErrorCode::invalid, path + ": \"" + key + "\" must be an integer");
         *target = document[key].get<int>();
@@ -137,6 +138,25 @@ bool DtrackReceiver::head_of(const DtrackFrame& frame, Eigen::Vector3d& world) {
     return true;
 }
 
+bool DtrackReceiver::hand_of(const DtrackFrame& frame, int id, Eigen::Vector3d& world) const {
+    Eigen::Vector3d room_mm;
+    if (const DtrackBody* body = frame.body(id)) {
+        if (!body->tracked()) return false;
+        room_mm = body->position_mm;
+    } else {
+        const DtrackMarker* marker = nullptr;
+        for (int i = 0; i < frame.marker_count && !marker; ++i) {
+            if (frame.markers[i].id == id) marker = &frame.markers[i];
+        }
+        if (!marker) return false;
+        room_mm = marker->position_mm;
+    }
+    const Eigen::Vector3d room = room_mm / 1000.0;
+    if ((room.array() < m_config.room_min.array()).any() || (room.array() > m_config.room_max.array()).any()) return false;
+    world = m_config.room_to_world * room;
+    return true;
+}
+
 const char* DtrackReceiver::take_notice() {
     if (!m_notice_pending) return nullptr;
     m_notice_pending = false;
@@ -170,6 +190,9 @@ bool DtrackReceiver::poll(HeadSample& head, double now_s) {
         }
         ++m_stats.accepted;
         head.position_world = world;
+        for (int side = 0; side < 2; ++side) {
+            head.hands.present[side] = m_config.hand_ids[side] >= 0 && hand_of(m_frame, m_config.hand_ids[side], head.hands.world[side]);
+        }
         head.frame_number = m_frame.frame_number;
         head.received_s = now_s;
         accepted = true;

@@ -105,6 +105,11 @@ Fighter::~Fighter() = default;
 
 std::span<const Eigen::Vector3d> Fighter::positions() const { return m_bodies[m_character]->decoder.model_positions(); }
 
+Eigen::Vector3d Fighter::part_position(BodyPart part) const {
+    const int joint = m_bodies[m_character]->rig->anatomy().body_map.joint(part);
+    return joint >= 0 ? positions()[joint] : m_heading.origin;
+}
+
 void Fighter::push_event(const FighterEvent& event) {
     if (m_event_count < static_cast<int>(m_events.size())) m_events[m_event_count++] = event;
 }
@@ -491,8 +496,9 @@ void Fighter::finish_frame() {
     m_heading = pose_heading(body.rig->skeleton(), body.rig->anatomy(), positions, body.decoder.model_rotations());
 }
 
-void Fighter::step(double t_s, const Eigen::Vector3d* head) {
+void Fighter::step(double t_s, const Eigen::Vector3d* head, const UserHands* hands) {
     m_now_s = t_s;
+    m_hands = hands ? *hands : UserHands{};
     if (!m_started) {
         m_started = true;
         enter(FighterState::rest, t_s);

@@ -1,6 +1,7 @@
 #include "kumite/runtime/head_tracker.h"
 
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 namespace kumite {
@@ -24,15 +25,21 @@ Result<std::unique_ptr<HeadTracker>> HeadTracker::open(std::string_view spec_vie
             if (!read) return read.error();
             tracker->m_scripted = std::move(*read);
         } else {
-            return make_error(ErrorCode::invalid, "--tracker simulate: takes still, wander, walk[:SPEED], dodge or a user script file, not '" + name + "'");
+            return make_error(ErrorCode::invalid, "--tracker simulate: takes still, wander, walk[:SPEED], dodge, punch or a user script file, not '" + name + "'");
         }
     } else if (spec.starts_with("dtrack:")) {
-        int port = 0, body = config.head_body;
+        int port = 0, body = config.head_body, left = -1, right = -1;
         char extra = 0;
-        const int fields = std::sscanf(spec.c_str() + 7, "%d:%d%c", &port, &body, &extra);
-        if (fields < 1 || fields > 2 || port <= 0 || port > 65535) return make_error(ErrorCode::invalid, "--tracker dtrack:PORT[:BODY], not '" + spec + "'");
+        const char* rest = spec.c_str() + 7;
+        const int fields = std::sscanf(rest, "%d:%d,%d,%d%c", &port, &body, &left, &right, &extra);
+        const bool plain = fields >= 1 && fields <= 2 && std::strchr(rest, ',') == nullptr;
+        const bool with_hands = fields == 4;
+        if ((!plain && !with_hands) || port <= 0 || port > 65535 || (with_hands && (body < 0 || left < 0 || right < 0))) {
+            return make_error(ErrorCode::invalid, "--tracker dtrack:PORT[:HEAD[,LEFT,RIGHT]] (ids of 6d bodies or 3d markers), not '" + spec + "'");
+        }
         config.port = port;
-        if (fields == 2) config.head_body = body;
+        if (fields >= 2) config.head_body = body;
+        if (with_hands) config.hand_ids = {left, right};
         Result<std::unique_ptr<DtrackReceiver>> opened = DtrackReceiver::open(config);
         if (!opened) return opened.error();
         tracker->m_receiver = std::move(*opened);
@@ -41,28 +48,37 @@ Result<std::unique_ptr<HeadTracker>> HeadTracker::open(std::string_view spec_vie
         if (!read) return read.error();
         tracker->m_replay = std::move(*read);
     } else {
-        return make_error(ErrorCode::invalid, "--tracker must be dtrack:PORT[:BODY], replay:FILE or simulate:still|wander|dodge|FILE, not '" + spec + "'");
+        return make_error(ErrorCode::invalid, "--tracker must be dtrack:PORT[:HEAD[,LEFT,RIGHT]], replay:FILE or simulate:still|wander|walk[:SPEED]|dodge|punch|FILE, not '" + spec + "'");
     }
     return tracker;
 }
 
+void HeadTracker::set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest) {
+    if (m_simulated) m_simulated->set_opponent(head, chest);
+    if (m_scripted) m_scripted->set_opponent(head, chest);
+}
+
 const Eigen::Vector3d* HeadTracker::head(double t_s) {
+    m_hands = UserHands{};
     if (m_simulated) {
         m_head = m_simulated->head(t_s);
+        m_hands = m_simulated->hands(t_s);
         return &m_head;
     }
     if (m_scripted) {
         m_head = m_scripted->head(t_s);
+        m_hands = m_scripted->hands(t_s);
         return &m_head;
     }
     if (m_replay) {
-        const std::optional<Eigen::Vector3d> replayed = m_replay->head(t_s);
+        const std::optional<Eigen::Vector3d> replayed = m_replay->head(t_s, &m_hands);
         if (!replayed) return nullptr;
         m_head = *replayed;
         return &m_head;
     }
     if (m_receiver && m_receiver->poll(m_sample, t_s)) {
         m_head = m_sample.position_world;
+        m_hands = m_sample.hands;
         return &m_head;
     }
     return nullptr;

@@ -16,10 +16,29 @@ Result<ReplayTrack> ReplayTrack::read(const std::string& path, double max_gap_s)
         const std::size_t first = line.find_first_not_of(" \t\r");
         if (first == std::string::npos || line[first] == '#') continue;
         double t = 0, x = 0, y = 0, z = 0;
+        double h[6] = {0, 0, 0, 0, 0, 0};
         char extra = 0;
-        if (std::sscanf(line.c_str(), " %lf , %lf , %lf , %lf %c", &t, &x, &y, &z, &extra) != 4) {
+        const int fields = std::sscanf(line.c_str(), " %lf , %lf , %lf , %lf , %lf , %lf , %lf , %lf , %lf , %lf %c", &t, &x, &y, &z, &h[0], &h[1],
+                                       &h[2], &h[3], &h[4], &h[5], &extra);
+        const bool with_hands = fields == 10;
+        if (fields != 4 && !with_hands) {
             if (track.m_times.empty() && (std::isalpha(static_cast<unsigned char>(line[first])) != 0)) continue; // a header
-            return make_error(ErrorCode::invalid, path + ":" + std::to_string(number) + ": expected t,x,y,z");
+            return make_error(ErrorCode::invalid, path + ":" + std::to_string(number) + ": expected t,x,y,z or t,x,y,z,lx,ly,lz,rx,ry,rz");
+        }
+        if (!track.m_times.empty() && with_hands != !track.m_hands.empty()) {
+            return make_error(ErrorCode::invalid, path + ":" + std::to_string(number) + ": every line must have the hands, or none");
+        }
+        if (with_hands) {
+            UserHands hands;
+            for (int side = 0; side < 2; ++side) {
+                const Eigen::Vector3d hand(h[3 * side], h[3 * side + 1], h[3 * side + 2]);
+                hands.present[side] = hand.allFinite();
+                if (hands.present[side]) hands.world[side] = hand;
+                else if (!hand.array().isNaN().all()) {
+                    return make_error(ErrorCode::invalid, path + ":" + std::to_string(number) + ": a hand is three numbers or nan,nan,nan");
+                }
+            }
+            track.m_hands.push_back(hands);
         }
         const Eigen::Vector3d head(x, y, z);
         if (!std::isfinite(t) || !head.allFinite()) return make_error(ErrorCode::invalid, path + ":" + std::to_string(number) + ": not a finite number");
@@ -33,11 +52,12 @@ Result<ReplayTrack> ReplayTrack::read(const std::string& path, double max_gap_s)
     return track;
 }
 
-std::optional<Eigen::Vector3d> ReplayTrack::head(double t_s) {
+std::optional<Eigen::Vector3d> ReplayTrack::head(double t_s, UserHands* hands) {
     while (m_next < m_times.size() && m_times[m_next] <= t_s) ++m_next;
     if (m_next == 0) return std::nullopt;
     const std::size_t latest = m_next - 1;
     if (t_s - m_times[latest] > m_max_gap_s) return std::nullopt;
+    if (hands && !m_hands.empty()) *hands = m_hands[latest];
     return m_heads[latest];
 }
 

@@ -22,6 +22,7 @@ std::optional<SimulatedKind> simulated_kind_from_name(std::string_view name) {
     if (name == "wander") return SimulatedKind::wander;
     if (name == "walk") return SimulatedKind::walk;
     if (name == "dodge") return SimulatedKind::dodge;
+    if (name == "punch") return SimulatedKind::punch;
     return std::nullopt;
 }
 
@@ -37,7 +38,8 @@ void SimulatedUser::on_order(double t_s) {
 Eigen::Vector3d SimulatedUser::head(double t_s) {
     const Eigen::Vector3d start = start_position();
     switch (m_kind) {
-    case SimulatedKind::still: return start;
+    case SimulatedKind::still:
+    case SimulatedKind::punch: return m_last_head = start;
     case SimulatedKind::wander:
     case SimulatedKind::walk: {
         const bool walk = m_kind == SimulatedKind::walk;
@@ -63,6 +65,21 @@ Eigen::Vector3d SimulatedUser::head(double t_s) {
     }
     }
     return start;
+}
+
+UserHands SimulatedUser::hands(double t_s) {
+    if (m_kind != SimulatedKind::punch) return {};
+    if (t_s >= m_next_punch_s && m_hands.has_opponent()) {
+        m_hands.punch(t_s, m_punches % 2, (m_punches / 2) % 2 == 0, m_random.uniform(4.0, 8.0));
+        ++m_punches;
+        m_next_punch_s = t_s + m_random.uniform(1.6, 2.4);
+    }
+    return m_hands.hands(t_s, m_last_head);
+}
+
+UserHands ScriptedUser::hands(double t_s) {
+    if (!m_has_hands) return {};
+    return m_hands.hands(t_s, m_last_head);
 }
 
 Result<ScriptedUser> ScriptedUser::read(const std::string& path) {
@@ -103,8 +120,19 @@ Result<ScriptedUser> ScriptedUser::read(const std::string& path) {
             action.dodge_mode = mode == "duck" ? 1 : mode == "side" ? 2 : mode == "off" ? 0 : -1;
             values[0] = 0.25;
             if (action.dodge_mode < 0 || !numbers(0, 1, values) || values[0] < 0.0) return fail("dodge takes duck, side or off, then an optional delay");
+        } else if (verb == "punch") {
+            action.kind = Action::Kind::punch;
+            std::string hand, aim;
+            words >> hand >> aim;
+            action.side = hand == "left" ? 0 : hand == "right" ? 1 : -1;
+            action.at_head = aim == "head";
+            values[0] = 6.0;
+            if (action.side < 0 || (aim != "head" && aim != "chest") || !numbers(0, 1, values) || !(values[0] >= 0.5 && values[0] <= 20.0)) {
+                return fail("punch takes left or right, head or chest, then an optional speed (0.5 to 20 m/s)");
+            }
+            user.m_has_hands = true;
         } else {
-            return fail("unknown action '" + verb + "' (at, walk, crouch, stand, sidestep, dodge)");
+            return fail("unknown action '" + verb + "' (at, walk, crouch, stand, sidestep, dodge, punch)");
         }
         action.a = values[0];
         action.b = values[1];
@@ -155,6 +183,7 @@ Eigen::Vector3d ScriptedUser::head(double t_s) {
             m_dodge_mode = action.dodge_mode;
             m_dodge_delay_s = action.a;
             break;
+        case Action::Kind::punch: m_hands.punch(now, action.side, action.at_head, action.a); break;
         }
     }
     const Eigen::Vector2d floor = walked(t_s);
@@ -165,7 +194,7 @@ Eigen::Vector3d ScriptedUser::head(double t_s) {
     if (since >= 0.0 && since <= 1.3) {
         head += dodge_amount(since) * (m_dodge_mode == 1 ? Eigen::Vector3d(0.0, -0.45, 0.0) : Eigen::Vector3d(0.5, 0.0, 0.0));
     }
-    return head;
+    return m_last_head = head;
 }
 
 } // namespace kumite

@@ -207,3 +207,30 @@ TEST_CASE("dtrack: with no head body chosen the lone 6d body is followed, marker
     CHECK(told.find("dtrack:" + std::to_string(receiver.port()) + ":ID") != std::string::npos);
     CHECK(receiver.take_notice() == nullptr); // once
 }
+
+TEST_CASE("dtrack: the hands come with the head, as 6d bodies or 3d markers by id", "[runtime]") {
+    DtrackConfig config;
+    config.port = 0;
+    config.head_body = 1;
+    config.hand_ids = {2, 30}; // the left hand a 6d body, the right a 3d marker
+    Result<std::unique_ptr<DtrackReceiver>> opened = DtrackReceiver::open(config);
+    REQUIRE(opened.has_value());
+    DtrackReceiver& receiver = **opened;
+    Sender sender(receiver.port());
+    HeadSample head;
+    sender.send("fr 1\n6d 2 [1 1.0][0 1650 1500 0 0 0][1 0 0 0 1 0 0 0 1] [2 1.0][170 1400 1200 0 0 0][1 0 0 0 1 0 0 0 1]\n"
+                "3d 2 [30 1.0][-170 1420 1250] [31 1.0][0 0 0]\n");
+    REQUIRE(poll_for(receiver, head, 1));
+    CHECK(receiver.stats().accepted == 1);
+    CHECK(head.position_world.isApprox(Eigen::Vector3d(0.0, 1.65, 1.5), 1e-9));
+    REQUIRE(head.hands.present[0]);
+    REQUIRE(head.hands.present[1]);
+    CHECK(head.hands.world[0].isApprox(Eigen::Vector3d(0.17, 1.4, 1.2), 1e-9));
+    CHECK(head.hands.world[1].isApprox(Eigen::Vector3d(-0.17, 1.42, 1.25), 1e-9));
+    // An untracked hand body and a missing marker: the head still counts, the hands are absent.
+    sender.send("fr 2\n6d 2 [1 1.0][0 1650 1500 0 0 0][1 0 0 0 1 0 0 0 1] [2 -1.0][0 0 0 0 0 0][1 0 0 0 1 0 0 0 1]\n3d 0\n");
+    REQUIRE(poll_for(receiver, head, 2));
+    CHECK(receiver.stats().accepted == 2);
+    CHECK_FALSE(head.hands.present[0]);
+    CHECK_FALSE(head.hands.present[1]);
+}

@@ -7,6 +7,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+
 #include <arpa/inet.h>
 #include <fstream>
 #include <netinet/in.h>
@@ -110,11 +112,77 @@ TEST_CASE("scripted user: a file walks, crouches, sidesteps and dodges on orders
     CHECK(user.head(6.3).y() == Approx(1.65));            // the dodge starts 0.25 s after the order
     CHECK(user.head(6.8).y() == Approx(1.2));             // ducked
     CHECK(user.head(8.0).y() == Approx(1.65));            // and back
-    for (const char* bad : {"0 jump", "x at 0 0", "0 walk 1", "0 walk 1 2 0", "0 crouch", "0 dodge sideways", "0 at 0 nan"}) {
+    CHECK_FALSE(user.hands(8.0).present[0]); // no punches: no tracked hands
+    // A script with a punch has hands; the punch reaches the fighter's chest.
+    std::ofstream(path) << "0 at 0 1.2\n1 punch right chest 5\n";
+    Result<ScriptedUser> puncher = ScriptedUser::read(path.string());
+    REQUIRE(puncher.has_value());
+    const Eigen::Vector3d chest(0.0, 1.3, 0.2);
+    bool reached = false;
+    for (int frame = 0; frame < 150; ++frame) {
+        puncher->set_opponent(Eigen::Vector3d(0.0, 1.65, 0.25), chest);
+        puncher->head(frame / 60.0);
+        const UserHands hands = puncher->hands(frame / 60.0);
+        REQUIRE(hands.present[1]);
+        reached = reached || (hands.world[1] - chest).norm() < 1e-6;
+    }
+    CHECK(reached);
+    for (const char* bad : {"0 jump", "x at 0 0", "0 walk 1", "0 walk 1 2 0", "0 crouch", "0 dodge sideways", "0 at 0 nan", "0 punch up head",
+                            "0 punch left belly", "0 punch left head 90"}) {
         std::ofstream(path) << bad << "\n";
         const Result<ScriptedUser> refused = ScriptedUser::read(path.string());
         INFO(bad);
         REQUIRE_FALSE(refused.has_value());
         CHECK_THAT(refused.error().message, Catch::Contains(":1:"));
     }
+}
+
+TEST_CASE("replay: a track with hand columns gives the hands, nan for an untracked one; mixed lines are refused", "[runtime]") {
+    const std::filesystem::path path = kumite::test::make_temp_dir("replay_hands") / "track.csv";
+    std::ofstream(path) << "t,x,y,z,lx,ly,lz,rx,ry,rz\n0.0,0,1.6,1.5,0.2,1.4,1.3,-0.2,1.4,1.3\n0.1,0,1.6,1.5,nan,nan,nan,-0.1,1.5,1.0\n";
+    Result<ReplayTrack> track = ReplayTrack::read(path.string());
+    REQUIRE(track.has_value());
+    UserHands hands;
+    REQUIRE(track->head(0.05, &hands).has_value());
+    CHECK(hands.present[0]);
+    CHECK(hands.world[1].isApprox(Eigen::Vector3d(-0.2, 1.4, 1.3)));
+    REQUIRE(track->head(0.12, &hands).has_value());
+    CHECK_FALSE(hands.present[0]);
+    CHECK(hands.world[1].isApprox(Eigen::Vector3d(-0.1, 1.5, 1.0)));
+    std::ofstream(path) << "0.0,0,1.6,1.5,0.2,1.4,1.3,-0.2,1.4,1.3\n0.1,0,1.6,1.5\n";
+    Result<ReplayTrack> mixed = ReplayTrack::read(path.string());
+    REQUIRE_FALSE(mixed.has_value());
+    CHECK(mixed.error().message.find(":2:") != std::string::npos);
+}
+
+TEST_CASE("simulated hands: a punching user punches from the guard at the fighter's head and chest at 4-8 m/s", "[runtime]") {
+    SimulatedUser user(SimulatedKind::punch, 9);
+    const Eigen::Vector3d fighter_head(0.0, 1.7, 0.3), fighter_chest(0.0, 1.35, 0.25);
+    int punches_at_head = 0, punches_at_chest = 0;
+    double previous_t = 0.0;
+    Eigen::Vector3d previous[2];
+    double fastest = 0.0;
+    for (int frame = 0; frame < 60 * 12; ++frame) {
+        const double t = frame / 60.0;
+        user.set_opponent(fighter_head, fighter_chest);
+        user.head(t);
+        const UserHands hands = user.hands(t);
+        REQUIRE(hands.present[0]);
+        REQUIRE(hands.present[1]);
+        for (int side = 0; side < 2; ++side) {
+            if (frame > 0) fastest = std::max(fastest, (hands.world[side] - previous[side]).norm() / (t - previous_t));
+            punches_at_head += (hands.world[side] - fighter_head).norm() < 1e-6;
+            punches_at_chest += (hands.world[side] - fighter_chest).norm() < 1e-6;
+            previous[side] = hands.world[side];
+        }
+        previous_t = t;
+    }
+    CHECK(punches_at_head >= 2); // held for a few frames at full extension
+    CHECK(punches_at_chest >= 2);
+    CHECK(fastest >= 4.0);
+    CHECK(fastest <= 8.0 + 1e-6);
+    // Users that do not punch have no tracked hands.
+    SimulatedUser still(SimulatedKind::still, 9);
+    still.head(0.0);
+    CHECK_FALSE(still.hands(0.0).present[0]);
 }

@@ -82,6 +82,7 @@ public:
     bool live() const { return m_tracker->live(); }
     const HeadTracker& tracker() const { return *m_tracker; }
     const Eigen::Vector3d* head() const { return m_have_head ? &m_head : nullptr; } // as of the last step
+    const UserHands& hands() const { return m_tracker->hands(); }                    // as of the last step
 
     int fighter_count() const { return static_cast<int>(m_fighters.size()); }
     const Fighter& fighter(int index) const { return *m_fighters[index]; }

@@ -12,6 +12,7 @@
 
 #include "kumite/core/result.h"
 #include "kumite/runtime/dtrack.h"
+#include "kumite/runtime/simulated_hands.h"
 
 #include <Eigen/Geometry>
 
@@ -24,17 +25,19 @@ struct DtrackConfig {
     std::string bind_address = "127.0.0.1";
     int port = 5000;                       // 0: any free port (tests)
     int head_body = -1;                    // 6d body id of the glasses; -1: none chosen (see head_of below)
+    std::array<int, 2> hand_ids{-1, -1};   // [left, right]: a 6d body or 3d marker id per hand; -1: not tracked
     Eigen::Affine3d room_to_world = Eigen::Affine3d::Identity(); // metres -> metres
     Eigen::Vector3d room_min = Eigen::Vector3d(-2.0, 0.0, -2.0); // a head outside this box (room frame, metres)
     Eigen::Vector3d room_max = Eigen::Vector3d(2.0, 2.6, 2.0);   // is rejected
 };
 
-// A DtrackConfig from a JSON file: {"bind": "127.0.0.1", "port": 5000, "head_body": 1,
+// A DtrackConfig from a JSON file: {"bind": "127.0.0.1", "port": 5000, "head_body": 1, "left_hand": 2, "right_hand": 3,
 // "room_to_world": [16 numbers, row-major 4x4], "room_min": [x,y,z], "room_max": [x,y,z]} (all keys optional).
 Result<DtrackConfig> dtrack_config_read(const std::string& path);
 
 struct HeadSample {
     Eigen::Vector3d position_world = Eigen::Vector3d::Zero();
+    UserHands hands;         // the hands of the same frame, when configured and tracked
     std::uint64_t frame_number = 0;
     double received_s = 0.0; // the caller's clock at poll()
 };
@@ -70,6 +73,9 @@ private:
     explicit DtrackReceiver(const DtrackConfig& config) : m_config(config) {}
     // The head of a parsed frame in world metres, or false with the counter to bump.
     bool head_of(const DtrackFrame& frame, Eigen::Vector3d& world);
+    // Hand `id` (a 6d body, else a 3d marker) of a parsed frame in world metres, or false (missing, untracked,
+    // outside the room).
+    bool hand_of(const DtrackFrame& frame, int id, Eigen::Vector3d& world) const;
 
     DtrackConfig m_config;
     int m_socket = -1;

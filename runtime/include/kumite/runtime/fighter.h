@@ -17,6 +17,7 @@
 
 #include "kumite/core/strike_adaptation.h"
 #include "kumite/runtime/head_motion_filter.h"
+#include "kumite/runtime/simulated_hands.h"
 
 #include <memory>
 #include <optional>
@@ -107,14 +108,16 @@ public:
     void set_aim(FighterAim aim) { m_settings.aim = aim; } // from the next strike on
     FighterAim aim() const { return m_settings.aim; }
 
-    // One frame at time t (seconds). `head`: the user's head this frame, or null when the tracker has none.
-    void step(double t_s, const Eigen::Vector3d* head);
+    // One frame at time t (seconds). `head`: the user's head this frame, or null when the tracker has none;
+    // `hands`: the user's tracked hands, if any.
+    void step(double t_s, const Eigen::Vector3d* head, const UserHands* hands = nullptr);
 
     FighterState state() const { return m_state; }
     int character() const { return m_character; }
     const Pose& pose() const { return m_pose; }              // on the current character
     const MirFrame& mir() const { return m_mir; }            // the pose in the MIR (to record it on any skeleton)
     std::span<const Eigen::Vector3d> positions() const;      // model positions of pose()
+    Eigen::Vector3d part_position(BodyPart part) const;      // of a body part of the current character, world
     HeadingFrame heading() const { return m_heading; }
     bool has_latched_target() const { return m_state == FighterState::strike; }
     const Eigen::Vector3d& latched_target() const { return m_plan.target_world; }
@@ -174,6 +177,7 @@ private:
     Eigen::Vector3d m_head = Eigen::Vector3d::Zero();
     double m_last_head_s = -1e9;
     HeadMotionFilter m_head_motion;
+    UserHands m_hands;                   // this frame's
     // orders
     bool m_pending = false;
     int m_pending_semantics = -1;

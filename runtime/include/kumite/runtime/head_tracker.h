@@ -1,7 +1,8 @@
 #pragma once
 // The user's head, from whichever source the room has (ARCHITECTURE.md "Inputs from the room"), behind one
-// interface: `dtrack:PORT[:BODY]` (A.R.T. DTrack UDP, live), `replay:FILE` (a CSV of t,x,y,z), or
-// `simulate:still|wander|dodge|FILE` (a simulated or scripted user, deterministic with the seed).
+// interface: `dtrack:PORT[:HEAD[,LEFT,RIGHT]]` (A.R.T. DTrack UDP, live; the hands are 6d bodies or 3d markers
+// by id), `replay:FILE` (a CSV of t,x,y,z[,lx,ly,lz,rx,ry,rz]), or `simulate:still|wander|walk[:SPEED]|dodge|punch|FILE`
+// (a simulated or scripted user, deterministic with the seed). The user's hands come with the head, when tracked.
 
 #include "kumite/runtime/dtrack_receiver.h"
 #include "kumite/runtime/replay_track.h"
@@ -22,6 +23,10 @@ public:
     // The head this frame (world metres), or null when the source has none (untracked, silent, a replay gap).
     // A live source answers only when a fresh sample arrived, so silence reaches the fighter.
     const Eigen::Vector3d* head(double t_s);
+    // The hands of the frame head(t) read (none present when the source tracks no hands).
+    const UserHands& hands() const { return m_hands; }
+    // Where the fighter's head and chest are: simulated users punch at them. Call before head(t).
+    void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest);
     // A supervisor order went out at t: simulated users that dodge react to it.
     void on_order(double t_s);
 
@@ -39,6 +44,7 @@ private:
     std::unique_ptr<DtrackReceiver> m_receiver;
     HeadSample m_sample;
     Eigen::Vector3d m_head = Eigen::Vector3d::Zero();
+    UserHands m_hands;
 };
 
 } // namespace kumite

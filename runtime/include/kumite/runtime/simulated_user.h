@@ -5,6 +5,9 @@
 //   wander — walks slowly (0.4 m/s) between random points of a 3 m x 3 m room centred on its start.
 //   walk   — the same at a given speed (default 0.8 m/s; `simulate:walk:1.2`), legs at least 1.5 m long.
 //   dodge  — like still, but 0.25 s after each order ducks 0.45 m or sidesteps 0.5 m (alternately) for 1 s.
+//   punch  — like still, with tracked hands that punch at the fighter from t = 3 s every 1.6-2.4 s: straight
+//            punches, left and right in turn, at the head twice then the chest twice, at 4-8 m/s.
+// Only `punch` users have tracked hands.
 
 #include <Eigen/Core>
 
@@ -13,13 +16,14 @@
 
 #include "kumite/core/result.h"
 #include "kumite/core/split_mix.h"
+#include "kumite/runtime/simulated_hands.h"
 
 #include <string>
 #include <vector>
 
 namespace kumite {
 
-enum class SimulatedKind { still, wander, walk, dodge };
+enum class SimulatedKind { still, wander, walk, dodge, punch };
 std::optional<SimulatedKind> simulated_kind_from_name(std::string_view name);
 
 class SimulatedUser {
@@ -28,6 +32,9 @@ public:
 
     Eigen::Vector3d head(double t_s); // call with non-decreasing times
     void on_order(double t_s);        // the supervisor gave an order at t
+    // Where the fighter's head and chest are (before head(t)), and the hands at t (after it).
+    void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest) { m_hands.set_opponent(head, chest); }
+    UserHands hands(double t_s);
 
     static constexpr double k_head_height_m = 1.65;
     static Eigen::Vector3d start_position() { return {0.0, k_head_height_m, 1.5}; }
@@ -42,6 +49,11 @@ private:
     // dodge: the current move
     double m_dodge_start_s = -1e9;
     int m_dodges = 0;
+    // punch: the hands and the next punch
+    SimulatedHands m_hands;
+    Eigen::Vector3d m_last_head = start_position();
+    double m_next_punch_s = 3.0;
+    int m_punches = 0;
 };
 
 // A user scripted in a file, one action per line, `<time_s> <action>` ('#' comments), applied in time order:
@@ -51,19 +63,25 @@ private:
 //   sidestep DX        move DX metres along x over 0.2 s
 //   dodge duck|side [DELAY]   from now on, DELAY s (default 0.25) after each order, duck 0.45 m or sidestep 0.5 m
 //                             for 1 s;  dodge off  stops
+//   punch left|right head|chest [SPEED]   a straight punch from that hand's guard at the fighter's head or chest
+//                             (default 6 m/s); a script with punches has tracked hands
 class ScriptedUser {
 public:
     static Result<ScriptedUser> read(const std::string& path);
 
     Eigen::Vector3d head(double t_s); // call with non-decreasing times
     void on_order(double t_s);
+    void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest) { m_hands.set_opponent(head, chest); }
+    UserHands hands(double t_s); // after head(t)
 
 private:
     struct Action {
         double t_s = 0.0;
-        enum class Kind { at, walk, crouch, stand, sidestep, dodge } kind = Kind::at;
+        enum class Kind { at, walk, crouch, stand, sidestep, dodge, punch } kind = Kind::at;
         double a = 0.0, b = 0.0, c = 0.0; // the action's numbers
         int dodge_mode = 0;               // 0 off, 1 duck, 2 side
+        int side = 0;                     // punch: 0 left, 1 right
+        bool at_head = true;              // punch
     };
     std::vector<Action> m_actions;
     std::size_t m_next = 0;
@@ -75,6 +93,9 @@ private:
     int m_dodge_mode = 0;
     double m_dodge_delay_s = 0.25;
     double m_dodge_start_s = -1e9;
+    SimulatedHands m_hands;
+    bool m_has_hands = false;
+    Eigen::Vector3d m_last_head = SimulatedUser::start_position();
 };
 
 } // namespace kumite
