@@ -50,6 +50,7 @@ const CommandSpec& play_spec() {
          {"realtime", "", "step on the wall clock"},
          {"seed", "N", "seed of the simulated user (default 1)"},
          {"lead", "S", "the least time from an order's strike start to its contact (default 0.4 s)"},
+         {"no-defence", "", "the fighter does not block or slip the user's strikes (also the command 'defence on|off', the viewer's D key)"},
          {"aim", "latched|predicted", "strike the head where it was at the order (default), or where it will be at the contact\n"
                                       "if it keeps its course (also the command 'aim latched|predicted' and the viewer's A key)"},
          {"record", "OUT.bvh", "the first fighter's motion on the starting character"},
@@ -114,6 +115,23 @@ nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
         line["joint_limit_violations"] = event.joint_limit_violations;
         break;
     case FighterEvent::Type::character: line["character"] = bout.character_name(event.character); break;
+    case FighterEvent::Type::user_strike:
+        line["hand"] = event.user_strike.hand == 0 ? "left" : "right";
+        line["aimed_at"] = event.user_strike.at_head ? "head" : "chest";
+        line["move"] = defence_move_name(event.user_strike.move);
+        line["arm"] = event.user_strike.arm == 0 ? "left" : "right";
+        line["time_to_impact_s"] = event.user_strike.time_to_impact_s;
+        line["hand_speed_mps"] = event.user_strike.hand_speed_mps;
+        break;
+    case FighterEvent::Type::user_strike_end:
+        line["hand"] = event.user_strike.hand == 0 ? "left" : "right";
+        line["aimed_at"] = event.user_strike.at_head ? "head" : "chest";
+        line["move"] = defence_move_name(event.user_strike.move);
+        line["outcome"] = user_strike_outcome_name(event.user_strike.outcome);
+        if (event.user_strike.forearm_to_path_m >= 0.0) line["forearm_to_path_m"] = event.user_strike.forearm_to_path_m;
+        line["joint_limit_violations"] = event.joint_limit_violations;
+        line["foot_shift_m"] = event.foot_shift_m;
+        break;
     default: break;
     }
     return line;
@@ -143,7 +161,14 @@ nlohmann::json play_report_json(const Bout& bout) {
             {"by_aim",
              {{"latched", {{"strikes", counters.latched_strikes}, {"hits", counters.latched_hits}}},
               {"predicted", {{"strikes", counters.predicted_strikes}, {"hits", counters.predicted_hits}}}}},
-            {"prediction_error_m", quantiles_of(counters.prediction_error_m)}};
+            {"prediction_error_m", quantiles_of(counters.prediction_error_m)},
+            {"defence", bout.fighter(0).defence_enabled()},
+            {"user_strikes",
+             {{"seen", counters.user_strikes}, {"blocks", counters.blocks}, {"slips", counters.slips}, {"blocked", counters.blocked},
+              {"slipped", counters.slipped}, {"hit_by_user", counters.hit_by_user}, {"missed", counters.user_missed},
+              {"forearm_to_path_m", quantiles_of(counters.forearm_to_path_m)},
+              {"joint_limit_violations", counters.defence_joint_limit_violations},
+              {"foot_shift_m", counters.defence_foot_shift_m}}}};
 }
 
 int run_play(int argc, char** argv) {
@@ -228,6 +253,7 @@ int run_play(int argc, char** argv) {
     options.fighters = static_cast<int>(*fighters_count);
     options.lead_s = lead_s;
     options.fighter.aim = aim;
+    options.fighter.defence.enabled = !arguments.has("no-defence");
     options.record = arguments.value("record").has_value();
     options.start_character = -1;
     std::vector<BoutCharacter> characters;

@@ -24,7 +24,7 @@ const KeyCommand k_keys[] = {{Qt::Key_1, "1", "punch"},      {Qt::Key_2, "2", "p
                              {Qt::Key_4, "4", "kick"},       {Qt::Key_5, "5", "kick left"},  {Qt::Key_6, "6", "kick right"}};
 
 const char* k_help =
-    "1/2/3 punch any/left/right   4/5/6 kick any/left/right   C next character   A aim latched / predicted\n"
+    "1/2/3 punch any/left/right   4/5/6 kick any/left/right   C next character   A aim latched / predicted   D defence on / off\n"
     "V orbit / head-coupled   S mono / side-by-side   F frame   Space pause   Esc quit   mouse: orbit, pan, zoom";
 
 class PlayerWindow : public QWidget {
@@ -67,6 +67,7 @@ protected:
         case Qt::Key_A:
             send(std::string("aim ") + (m_bout.fighter(0).aim() == FighterAim::latched ? "predicted" : "latched"));
             return;
+        case Qt::Key_D: send(std::string("defence ") + (m_bout.fighter(0).defence_enabled() ? "off" : "on")); return;
         case Qt::Key_V:
             m_view->set_projection(m_view->projection() == Projection::orbit ? Projection::head_coupled : Projection::orbit);
             return;
@@ -175,6 +176,10 @@ private:
                           e.hit ? "HIT" : "miss", target_part_name(e.target_part), fighter_aim_name(e.aim), e.contact_error_m * 100.0);
             break;
         case FighterEvent::Type::ignored_order: std::snprintf(text, sizeof text, "%.1f s  order ignored: %s", e.t_s, e.why); break;
+        case FighterEvent::Type::user_strike_end:
+            std::snprintf(text, sizeof text, "%.1f s  user's %s at the %s: %s", e.t_s, e.user_strike.hand == 0 ? "left" : "right",
+                          e.user_strike.at_head ? "head" : "chest", user_strike_outcome_name(e.user_strike.outcome));
+            break;
         case FighterEvent::Type::tracker_lost: std::snprintf(text, sizeof text, "%.1f s  tracker lost", e.t_s); break;
         case FighterEvent::Type::tracker_back: std::snprintf(text, sizeof text, "%.1f s  tracker back", e.t_s); break;
         default: return;
@@ -199,6 +204,14 @@ private:
                      .arg(c.misses)
                      .arg(c.last_contact_error_m < 0 ? QString("-") : QString("%1 cm (%2)").arg(c.last_contact_error_m * 100.0, 0, 'f', 1).arg(c.last_hit ? "hit" : "miss"))
                      .arg(m_bout.head() ? "head tracked" : "no head");
+        if (c.user_strikes > 0 || m_bout.hands().present[0] || m_bout.hands().present[1]) {
+            lines += QString("defence %1  |  user strikes %2: %3 blocked, %4 slipped, %5 landed\n")
+                         .arg(fighter.defence_enabled() ? "on" : "off")
+                         .arg(c.user_strikes)
+                         .arg(c.blocked)
+                         .arg(c.slipped)
+                         .arg(c.hit_by_user);
+        }
         lines += QString("%1 camera%2  |  %3%4")
                      .arg(m_view->projection() == Projection::orbit ? "orbit" : "head-coupled")
                      .arg(m_view->stereo() == StereoMode::mono ? "" : ", stereo side by side")
@@ -208,7 +221,7 @@ private:
         QFont font = painter.font();
         font.setPointSizeF(10.0);
         painter.setFont(font);
-        const QRect top(rect.left() + 10, rect.top() + 8, rect.width() - 20, 70);
+        const QRect top(rect.left() + 10, rect.top() + 8, rect.width() - 20, 90);
         painter.setPen(QColor(0, 0, 0, 160));
         painter.drawText(top.translated(1, 1), Qt::AlignLeft | Qt::AlignTop, lines);
         painter.setPen(QColor(235, 238, 245));

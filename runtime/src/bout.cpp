@@ -115,6 +115,9 @@ void Bout::apply(std::string_view line, const std::string& where) {
         for (auto& fighter : m_fighters) fighter->set_aim(aim);
         break;
     }
+    case SupervisorCommand::Verb::defence:
+        for (auto& fighter : m_fighters) fighter->set_defence(command->argument == "on");
+        break;
     case SupervisorCommand::Verb::quit: m_quit = true; break;
     }
 }
@@ -164,6 +167,22 @@ void Bout::step(double t_s) {
                 if (event.prediction_error_m < 1e8) m_counters.prediction_error_m.add(event.prediction_error_m);
                 (event.aim == FighterAim::predicted ? m_counters.predicted_strikes : m_counters.latched_strikes) += 1;
                 (event.aim == FighterAim::predicted ? m_counters.predicted_hits : m_counters.latched_hits) += event.hit;
+                break;
+            case FighterEvent::Type::user_strike:
+                ++m_counters.user_strikes;
+                m_counters.blocks += event.user_strike.move == DefenceMove::block;
+                m_counters.slips += event.user_strike.move == DefenceMove::slip;
+                break;
+            case FighterEvent::Type::user_strike_end:
+                switch (event.user_strike.outcome) {
+                case UserStrikeOutcome::blocked: ++m_counters.blocked; break;
+                case UserStrikeOutcome::slipped: ++m_counters.slipped; break;
+                case UserStrikeOutcome::hit_by_user: ++m_counters.hit_by_user; break;
+                case UserStrikeOutcome::missed: ++m_counters.user_missed; break;
+                }
+                if (event.user_strike.forearm_to_path_m >= 0.0) m_counters.forearm_to_path_m.add(event.user_strike.forearm_to_path_m);
+                m_counters.defence_joint_limit_violations += event.joint_limit_violations;
+                m_counters.defence_foot_shift_m = std::max(m_counters.defence_foot_shift_m, event.foot_shift_m);
                 break;
             case FighterEvent::Type::strike_end:
                 (event.impact ? m_counters.impacts : m_counters.follow_throughs) += 1;

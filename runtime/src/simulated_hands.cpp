@@ -24,14 +24,15 @@ Eigen::Vector3d SimulatedHands::guard(int side, const Eigen::Vector3d& head) con
     return head + 0.25 * forward - 0.22 * Eigen::Vector3d::UnitY() + (side == 0 ? 0.17 : -0.17) * left;
 }
 
-void SimulatedHands::punch(double t_s, int side, bool at_head, double speed_mps) {
+void SimulatedHands::punch(double t_s, int side, bool at_head, double speed_mps, double distance_m) {
     if (!m_has_opponent || !(speed_mps > 0.0)) return;
     m_punch.active = true;
     m_punch.side = side;
     m_punch.start_s = t_s;
     m_punch.to = at_head ? m_opponent_head : m_opponent_chest;
-    m_punch.from = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN()); // the guard when it starts
-    m_punch.out_s = -speed_mps;                                                          // resolved at the first frame
+    m_punch.speed_mps = speed_mps;
+    m_punch.distance_m = distance_m;
+    m_punch.drawn = false;
 }
 
 UserHands SimulatedHands::hands(double t_s, const Eigen::Vector3d& head) {
@@ -42,18 +43,24 @@ UserHands SimulatedHands::hands(double t_s, const Eigen::Vector3d& head) {
     }
     if (!m_punch.active || t_s < m_punch.start_s) return out;
     Punch& punch = m_punch;
-    if (punch.out_s < 0.0) { // the start's guard is fixed at the first frame that sees the punch
-        punch.from = out.world[punch.side];
-        punch.out_s = (punch.to - punch.from).norm() / -punch.out_s;
+    const Eigen::Vector3d rest = out.world[punch.side];
+    if (!punch.drawn) { // the start: `distance` from the target, on the line through the guard
+        punch.drawn = true;
+        punch.guard = rest;
+        const Eigen::Vector3d back = rest - punch.to;
+        punch.from = punch.to + (back.norm() > 1e-6 ? Eigen::Vector3d(back.normalized()) : Eigen::Vector3d::UnitZ()) * punch.distance_m;
+        punch.out_s = punch.distance_m / punch.speed_mps;
     }
     const double since = t_s - punch.start_s;
-    const Eigen::Vector3d rest = out.world[punch.side];
-    if (since <= punch.out_s) {
-        out.world[punch.side] = punch.from + (punch.to - punch.from) * (since / std::max(1e-6, punch.out_s)); // steady speed
-    } else if (since <= punch.out_s + k_hold_s) {
+    const double thrust = since - k_draw_s;
+    if (thrust < 0.0) {
+        out.world[punch.side] = punch.guard + (punch.from - punch.guard) * smoothstep(since / k_draw_s);
+    } else if (thrust <= punch.out_s) {
+        out.world[punch.side] = punch.from + (punch.to - punch.from) * (thrust / std::max(1e-6, punch.out_s)); // steady speed
+    } else if (thrust <= punch.out_s + k_hold_s) {
         out.world[punch.side] = punch.to;
-    } else if (since <= punch.out_s + k_hold_s + k_retract_s) {
-        out.world[punch.side] = punch.to + (rest - punch.to) * smoothstep((since - punch.out_s - k_hold_s) / k_retract_s);
+    } else if (thrust <= punch.out_s + k_hold_s + k_retract_s) {
+        out.world[punch.side] = punch.to + (rest - punch.to) * smoothstep((thrust - punch.out_s - k_hold_s) / k_retract_s);
     } else {
         punch.active = false;
     }

@@ -70,7 +70,8 @@ Eigen::Vector3d SimulatedUser::head(double t_s) {
 UserHands SimulatedUser::hands(double t_s) {
     if (m_kind != SimulatedKind::punch) return {};
     if (t_s >= m_next_punch_s && m_hands.has_opponent()) {
-        m_hands.punch(t_s, m_punches % 2, (m_punches / 2) % 2 == 0, m_random.uniform(4.0, 8.0));
+        const double speed = m_random.uniform(4.0, 8.0);
+        m_hands.punch(t_s, m_punches % 2, (m_punches / 2) % 2 == 0, speed, m_random.uniform(0.6, 1.0));
         ++m_punches;
         m_next_punch_s = t_s + m_random.uniform(1.6, 2.4);
     }

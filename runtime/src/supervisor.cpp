@@ -49,11 +49,15 @@ Result<SupervisorCommand> supervisor_command_parse(std::string_view line) {
         }
         command.verb = SupervisorCommand::Verb::aim;
         command.argument = argument;
+    } else if (verb == "defence") {
+        if (argument != "on" && argument != "off") return make_error(ErrorCode::invalid, "defence must be on or off, not '" + std::string(argument) + "'");
+        command.verb = SupervisorCommand::Verb::defence;
+        command.argument = argument;
     } else if (verb == "quit") {
         if (!argument.empty()) return make_error(ErrorCode::invalid, "quit takes nothing");
         command.verb = SupervisorCommand::Verb::quit;
     } else {
-        return make_error(ErrorCode::invalid, "unknown command '" + std::string(verb) + "' (punch, kick, character, aim, quit)");
+        return make_error(ErrorCode::invalid, "unknown command '" + std::string(verb) + "' (punch, kick, character, aim, defence, quit)");
     }
     return command;
 }

@@ -109,3 +109,18 @@ TEST_CASE("bout: a step allocates nothing, with a dodging simulated user, orders
     CHECK((*bout)->counters().strikes == 2);
     CHECK(events > 4);
 }
+
+TEST_CASE("bout: a step allocates nothing while a punching user's strikes are defended", "[core]") {
+    const MotionDatabase database = golden();
+    const kumite::test::StandingCharacter brawler("brawler", database.view());
+    Result<std::unique_ptr<HeadTracker>> tracker = HeadTracker::open("simulate:punch", DtrackConfig{}, 5);
+    REQUIRE(tracker);
+    Result<std::unique_ptr<Bout>> bout = Bout::create(database.view(), {{"brawler", brawler.file}}, std::move(*tracker), BoutOptions{});
+    REQUIRE(bout);
+    (*bout)->step(0.0);
+    kumite::test::AllocationScope scope;
+    for (int frame = 1; frame < 12 * 60; ++frame) (*bout)->step(frame / 60.0);
+    CHECK(scope.count() == 0);
+    CHECK((*bout)->counters().user_strikes >= 3);
+    CHECK((*bout)->counters().blocks + (*bout)->counters().slips >= 3);
+}

@@ -106,6 +106,50 @@ TEST_CASE("fighter: predicted aim hits a walking user, latched aim does not, nei
     CHECK(dodged.hits <= 0.1 * dodged.strikes);
 }
 
+TEST_CASE("fighter: a punching user's strikes are blocked or slipped with defence on and land with it off", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    if (!content) return;
+    for (const char* character : {"brawler", "scout"}) {
+        for (bool defend : {true, false}) {
+            FighterSettings settings;
+            settings.defence.enabled = defend;
+            Bout b(content->view(), character, settings);
+            SimulatedUser user(SimulatedKind::punch, 4);
+            for (int frame = 0; frame < 30 * 60; ++frame) {
+                const double t = frame / 60.0;
+                user.set_opponent(b.fighter->part_position(BodyPart::head), b.fighter->part_position(BodyPart::chest));
+                const Eigen::Vector3d head = user.head(t);
+                const UserHands hands = user.hands(t);
+                b.fighter->step(t, &head, &hands);
+                for (const FighterEvent& event : b.fighter->events()) b.events.push_back(event);
+                b.fighter->clear_events();
+            }
+            int seen = 0, defended = 0, landed = 0, violations = 0, far_blocks = 0;
+            double foot_shift = 0.0;
+            for (const FighterEvent& e : b.events) {
+                if (e.type != FighterEvent::Type::user_strike_end) continue;
+                ++seen;
+                defended += e.user_strike.outcome == UserStrikeOutcome::blocked || e.user_strike.outcome == UserStrikeOutcome::slipped;
+                landed += e.user_strike.outcome == UserStrikeOutcome::hit_by_user;
+                far_blocks += e.user_strike.outcome == UserStrikeOutcome::blocked && e.user_strike.forearm_to_path_m > 0.05;
+                violations += e.joint_limit_violations;
+                foot_shift = std::max(foot_shift, e.foot_shift_m);
+            }
+            INFO(character << (defend ? " defending: " : " not defending: ") << seen << " user strikes, " << defended << " defended, " << landed
+                           << " landed");
+            CHECK(seen >= 12);
+            if (defend) {
+                CHECK(defended >= 0.8 * seen);
+                CHECK(far_blocks == 0);
+                CHECK(violations == 0);
+                CHECK(foot_shift < 1e-6);
+            } else {
+                CHECK(landed >= 0.8 * seen);
+            }
+        }
+    }
+}
+
 TEST_CASE("fighter: a fighter that cannot reach the head strikes the highest body point it reaches", "[runtime][corpus]") {
     const MotionDatabaseContent* content = reference_database();
     if (!content) return;

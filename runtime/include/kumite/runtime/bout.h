@@ -49,6 +49,11 @@ struct BoutCounters {
     long long impacts = 0, follow_throughs = 0; // strikes that stopped at the target, strikes the user dodged
     ValueHistogram prediction_error_m{1e-4, 100.0}; // per strike: the head at the contact to the target aimed at
     long long latched_strikes = 0, latched_hits = 0, predicted_strikes = 0, predicted_hits = 0; // by aim
+    // The user's strikes at the fighter: how each ended, and how close a blocked one's path came to the forearm.
+    long long user_strikes = 0, blocked = 0, slipped = 0, hit_by_user = 0, user_missed = 0, blocks = 0, slips = 0;
+    ValueHistogram forearm_to_path_m{1e-4, 10.0};
+    long long defence_joint_limit_violations = 0;
+    double defence_foot_shift_m = 0.0; // the largest
     double last_contact_error_m = -1.0;         // of the last strike; -1 before any
     bool last_hit = false;
 };

@@ -16,6 +16,7 @@
 // strike carries on, decoded on the new character.
 
 #include "kumite/core/strike_adaptation.h"
+#include "kumite/runtime/defence.h"
 #include "kumite/runtime/head_motion_filter.h"
 #include "kumite/runtime/simulated_hands.h"
 
@@ -58,12 +59,13 @@ struct FighterSettings {
     HeadMotionSettings head_motion;  // the filter behind predicted aim
     bool reach_fallback = true;      // aim lower on the body when the head is out of reach (else strike at the head)
     double reach_tolerance_m = 0.05; // a strike reaches a point when its adaptation gets the hit point this close
+    DefenceSettings defence;         // blocks and slips against the user's tracked hands (defence.h)
     double wait_for_reach_s = 1.5;   // an order no strike reaches waits this long for the fighter to step in (the
                                      // target stays latched), then strikes at the head anyway
 };
 
 struct FighterEvent {
-    enum class Type { order, ignored_order, state, strike, strike_end, tracker_lost, tracker_back, character };
+    enum class Type { order, ignored_order, state, strike, strike_end, tracker_lost, tracker_back, character, user_strike, user_strike_end };
     Type type = Type::state;
     double t_s = 0.0;
     FighterState state = FighterState::rest; // state events: the new state
@@ -86,6 +88,9 @@ struct FighterEvent {
     double retrieval_offset_m = 0.0;         // strike events: the chosen clip's natural hit point to the target
     TargetPart target_part = TargetPart::head; // strike events: the part aimed at
     bool reachable = true;                   // strike events: the adaptation gets the hit point to the target
+    UserStrikeEvent user_strike;             // user_strike (seen, the move chosen) and user_strike_end (outcome; its
+                                             // joint_limit_violations and foot_shift_m: what the defence did)
+    double foot_shift_m = 0.0;
     int character = -1;                      // character events
     const char* why = "";                    // ignored orders
 };
@@ -107,6 +112,9 @@ public:
     void set_character(int index);
     void set_aim(FighterAim aim) { m_settings.aim = aim; } // from the next strike on
     FighterAim aim() const { return m_settings.aim; }
+    void set_defence(bool enabled) { m_defence.settings().enabled = enabled; }
+    bool defence_enabled() const { return m_defence.enabled(); }
+    const Defence& defence() const { return m_defence; }
 
     // One frame at time t (seconds). `head`: the user's head this frame, or null when the tracker has none;
     // `hands`: the user's tracked hands, if any.
@@ -147,6 +155,8 @@ private:
     void play_strike(double t_s);
     FighterEvent strike_event(FighterEvent::Type type, double t_s) const; // a strike or strike_end event of the strike
     void finish_frame();
+    void defend(double t_s);        // follows the user's hands, starts and ends moves, emits their events
+    void apply_defence();           // decodes the shown pose again with the move's edits (when one is on)
     bool order_fits(int semantics, const char*& why) const;
     HeadingFrame heading_towards_user() const;
     double distance_to_user() const; // horizontal, pelvis to head
@@ -178,6 +188,11 @@ private:
     double m_last_head_s = -1e9;
     HeadMotionFilter m_head_motion;
     UserHands m_hands;                   // this frame's
+    Defence m_defence;
+    MirFrame m_defended_frame;           // scratch: the shown frame with the defence's edits
+    LimbPins m_defence_pins;
+    int m_defence_violations = 0;        // joint-limit violations of the defence's edits, since the last user strike ended
+    double m_defence_foot_shift_m = 0.0; // how far they moved a foot, since then
     // orders
     bool m_pending = false;
     int m_pending_semantics = -1;

@@ -1,7 +1,9 @@
 #pragma once
-// The user's hands as the room tracks them, and a simulated user's hands that punch: straight punches from the
-// guard at the fighter's head or chest (latched when the punch starts), at a given speed, then back to the guard.
-// The guard: each hand 0.25 m in front of the head (towards the fighter), 0.22 m below it, 0.17 m to its side.
+// The user's hands as the room tracks them, and a simulated user's hands that punch: a straight punch at the
+// fighter's head or chest (latched when the punch starts) from `distance` away: the hand draws back from its guard
+// to that distance over 0.25 s (slowly, on the line to the target), thrusts at a steady speed, holds, and returns
+// to the guard. The guard: each hand 0.25 m in front of the head (towards the fighter), 0.22 m below it, 0.17 m to
+// its side.
 
 #include <Eigen/Core>
 
@@ -21,11 +23,12 @@ public:
     void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest);
     // A straight punch of hand `side` (0 left, 1 right) from its guard at the opponent's head (else chest), as they
     // are now, at `speed_mps` along the way; a punch under way is replaced.
-    void punch(double t_s, int side, bool at_head, double speed_mps);
+    void punch(double t_s, int side, bool at_head, double speed_mps, double distance_m = 0.8);
     // The hands at t (non-decreasing) for a user whose head is at `head`.
     UserHands hands(double t_s, const Eigen::Vector3d& head);
     bool has_opponent() const { return m_has_opponent; }
 
+    static constexpr double k_draw_s = 0.25;    // back to the punch's start
     static constexpr double k_hold_s = 0.05;    // at full extension
     static constexpr double k_retract_s = 0.3;  // back to the guard
 
@@ -37,9 +40,10 @@ private:
     struct Punch {
         bool active = false;
         int side = 0;
-        double start_s = 0.0, out_s = 0.0; // when it starts, how long the way out takes (< 0: minus the speed,
-                                           // until the first frame fixes where it starts)
-        Eigen::Vector3d from = Eigen::Vector3d::Zero(), to = Eigen::Vector3d::Zero();
+        double start_s = 0.0, out_s = 0.0; // when it starts (the draw back), how long the thrust takes
+        double speed_mps = 0.0, distance_m = 0.8;
+        bool drawn = false;                 // the guard it draws back from is fixed at the first frame
+        Eigen::Vector3d guard = Eigen::Vector3d::Zero(), from = Eigen::Vector3d::Zero(), to = Eigen::Vector3d::Zero();
     } m_punch;
 };
 

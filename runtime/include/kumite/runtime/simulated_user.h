@@ -6,7 +6,7 @@
 //   walk   — the same at a given speed (default 0.8 m/s; `simulate:walk:1.2`), legs at least 1.5 m long.
 //   dodge  — like still, but 0.25 s after each order ducks 0.45 m or sidesteps 0.5 m (alternately) for 1 s.
 //   punch  — like still, with tracked hands that punch at the fighter from t = 3 s every 1.6-2.4 s: straight
-//            punches, left and right in turn, at the head twice then the chest twice, at 4-8 m/s.
+//            punches from 0.6-1.0 m, left and right in turn, at the head twice then the chest twice, at 4-8 m/s.
 // Only `punch` users have tracked hands.
 
 #include <Eigen/Core>

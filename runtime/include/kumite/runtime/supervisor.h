@@ -1,6 +1,6 @@
 #pragma once
 // Supervisor commands, one per line: `punch [left|right]`, `kick [left|right]`, `character NAME`,
-// `aim latched|predicted`, `quit`. They come
+// `aim latched|predicted`, `defence on|off`, `quit`. They come
 // from a script file (`<time_s> <command>` lines), stdin, or a TCP connection on 127.0.0.1 (the port is opt-in).
 // Streams are read without blocking from the frame loop; an unknown line is answered with an error line (on stdout
 // for stdin, on the connection for TCP) and ignored.
@@ -17,7 +17,7 @@
 namespace kumite {
 
 struct SupervisorCommand {
-    enum class Verb { punch, kick, character, aim, quit } verb = Verb::punch;
+    enum class Verb { punch, kick, character, aim, defence, quit } verb = Verb::punch;
     std::string side;      // "", "left" or "right" for strikes
     std::string argument;  // the character's name, the aim mode
 };

@@ -1,0 +1,120 @@
+#pragma once
+// Defence against the user's own strikes (the paper's future work: "react to kicks and punches of the user").
+// Every frame the user's tracked hands are followed (a smoothed velocity); a hand whose straight course passes
+// within `threat_radius_m` of the fighter's head or chest within `horizon_s` starts a user strike. A fighter at
+// rest or approaching then defends:
+//   block — the forearm on the side the hand comes from is moved onto the hand's predicted path, a third of a metre
+//           before the target (the arm's extremity driven by a world offset, as a strike drives its hit point:
+//           two-bone IK with the clip's swivel), when the wrist can get there in time at a plausible speed;
+//   slip  — otherwise the trunk leans the head (and chest) off the hand's line, turning above the spine's base.
+// Each user strike ends as `blocked` (the hand's path this frame met the blocking forearm), `hit_by_user` (it met
+// the head or chest), `slipped` (it went back without either while the fighter slipped) or `missed` (without
+// either, and no slip). Nothing here allocates.
+
+#include "kumite/core/heading_frame.h"
+#include "kumite/runtime/simulated_hands.h"
+
+#include <array>
+#include <span>
+
+namespace kumite {
+
+enum class DefenceMove { none, block, slip };
+enum class UserStrikeOutcome { blocked, slipped, hit_by_user, missed };
+const char* defence_move_name(DefenceMove move);
+const char* user_strike_outcome_name(UserStrikeOutcome outcome);
+
+struct DefenceSettings {
+    bool enabled = true;
+    double horizon_s = 0.35;          // a hand arriving within this long is a threat
+    double min_speed_mps = 3.0;       // slower hands are not strikes
+    double threat_radius_m = 0.25;    // how close its course must pass to the head or chest
+    double head_radius_m = 0.12;      // a hand this close to the head (its path this frame) hits it
+    double chest_radius_m = 0.16;
+    double block_contact_m = 0.05;    // a hand path this close to the blocking forearm is blocked
+    double block_before_m = 0.3;      // where the forearm meets the path: this far before the target
+    double max_block_speed_mps = 8.0; // faster wrist moves are not plausible: slip instead
+    double slip_m = 0.3;              // how far the head leans off the line
+    double hold_s = 0.2;              // the move held after the hand's expected arrival
+    double release_s = 0.3;           // back to the guard
+};
+
+// The fighter's body as the defence sees it (world metres, last frame): arms [left, right].
+struct DefenderBody {
+    Eigen::Vector3d head = Eigen::Vector3d::Zero(), chest = Eigen::Vector3d::Zero();
+    std::array<Eigen::Vector3d, 2> elbow{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+    std::array<Eigen::Vector3d, 2> wrist{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+    std::array<Eigen::Vector3d, 2> shoulder{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+    std::array<double, 2> arm_length{0.6, 0.6}; // shoulder to wrist, stretched
+    HeadingFrame heading;
+};
+
+struct UserStrikeEvent {
+    bool ended = false;              // false: the strike was seen (move chosen); true: its outcome
+    double t_s = 0.0;
+    int hand = 0;                    // the user's 0 left, 1 right
+    bool at_head = true;             // what its course was aimed at
+    DefenceMove move = DefenceMove::none;
+    int arm = 0;                     // blocking arm of the fighter: 0 left, 1 right
+    double time_to_impact_s = 0.0;
+    double hand_speed_mps = 0.0;
+    UserStrikeOutcome outcome = UserStrikeOutcome::missed;
+    double forearm_to_path_m = -1.0; // ended blocks: the closest the hand's path came to the blocking forearm
+};
+
+// The distance between segments [a0, a1] and [b0, b1].
+double segment_distance(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1, const Eigen::Vector3d& b0, const Eigen::Vector3d& b1);
+
+class Defence {
+public:
+    explicit Defence(DefenceSettings settings = {}) : m_settings(settings) {}
+    DefenceSettings& settings() { return m_settings; }
+    bool enabled() const { return m_settings.enabled; }
+
+    // One frame: the user's hands, the fighter's body, whether a move may start (at rest or approaching).
+    void update(double t_s, const UserHands& hands, const DefenderBody& body, bool can_start);
+    void reset(); // tracking lost, a character switch: forget hands and moves
+
+    bool active() const { return m_move != DefenceMove::none; } // a move is on (orders wait)
+    // This frame's edits: the block's arm, weight and wrist target; the slip's weight and head offset.
+    DefenceMove move() const { return m_move; }
+    int block_arm() const { return m_arm; }
+    double block_weight() const { return m_move == DefenceMove::block ? m_weight : 0.0; }
+    const Eigen::Vector3d& block_wrist_target() const { return m_wrist_target; }
+    double slip_weight() const { return m_move == DefenceMove::slip ? m_weight : 0.0; }
+    const Eigen::Vector3d& slip_offset() const { return m_slip_offset; } // full lean, world, horizontal
+
+    std::span<const UserStrikeEvent> events() const { return {m_events.data(), std::size_t(m_event_count)}; }
+    void clear_events() { m_event_count = 0; }
+
+private:
+    struct Hand {
+        bool seen = false;
+        Eigen::Vector3d position = Eigen::Vector3d::Zero(), velocity = Eigen::Vector3d::Zero();
+        double last_s = 0.0;
+        bool striking = false;       // a user strike of this hand is under way
+        bool armed = true;           // a new strike may start (after one ends: once the hand has slowed down)
+        UserStrikeEvent strike;
+        double closest_forearm_m = 1e9;
+        int receding_frames = 0;
+    };
+    void push(const UserStrikeEvent& event);
+    void start_move(double t_s, Hand& hand, const DefenderBody& body, double time_to_impact);
+    // Where the blocking wrist should go to meet the hand's course in time, and with which arm; false when it
+    // cannot get there at a plausible speed.
+    bool block_plan(const Hand& hand, const DefenderBody& body, double time_to_impact, Eigen::Vector3d& wrist_target, int& arm) const;
+    void end_strike(double t_s, Hand& hand, UserStrikeOutcome outcome);
+
+    DefenceSettings m_settings;
+    std::array<Hand, 2> m_hands;
+    DefenceMove m_move = DefenceMove::none;
+    int m_move_hand = -1;
+    int m_arm = 0;
+    double m_weight = 0.0;
+    double m_move_start_s = 0.0, m_ramp_s = 0.1, m_hold_until_s = 0.0;
+    Eigen::Vector3d m_wrist_target = Eigen::Vector3d::Zero(), m_slip_offset = Eigen::Vector3d::Zero();
+    std::array<UserStrikeEvent, 8> m_events;
+    int m_event_count = 0;
+};
+
+} // namespace kumite

@@ -1,0 +1,231 @@
+#include "kumite/runtime/defence.h"
+
+#include "kumite/core/smoothstep.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace kumite {
+
+const char* defence_move_name(DefenceMove move) {
+    switch (move) {
+    case DefenceMove::none: return "none";
+    case DefenceMove::block: return "block";
+    case DefenceMove::slip: return "slip";
+    }
+    return "?";
+}
+
+const char* user_strike_outcome_name(UserStrikeOutcome outcome) {
+    switch (outcome) {
+    case UserStrikeOutcome::blocked: return "blocked";
+    case UserStrikeOutcome::slipped: return "slipped";
+    case UserStrikeOutcome::hit_by_user: return "hit_by_user";
+    case UserStrikeOutcome::missed: return "missed";
+    }
+    return "?";
+}
+
+double segment_distance(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1, const Eigen::Vector3d& b0, const Eigen::Vector3d& b1) {
+    // The closest points of the two segments (Ericson, Real-Time Collision Detection 5.1.9), degenerate ones too.
+    const Eigen::Vector3d d1 = a1 - a0, d2 = b1 - b0, r = a0 - b0;
+    const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+    double s = 0.0, t = 0.0;
+    constexpr double tiny = 1e-12;
+    if (a <= tiny && e <= tiny) return r.norm();
+    if (a <= tiny) {
+        t = std::clamp(f / e, 0.0, 1.0);
+    } else {
+        const double c = d1.dot(r);
+        if (e <= tiny) {
+            s = std::clamp(-c / a, 0.0, 1.0);
+        } else {
+            const double b = d1.dot(d2), denominator = a * e - b * b;
+            s = denominator > tiny ? std::clamp((b * f - c * e) / denominator, 0.0, 1.0) : 0.0;
+            t = (b * s + f) / e;
+            if (t < 0.0) {
+                t = 0.0;
+                s = std::clamp(-c / a, 0.0, 1.0);
+            } else if (t > 1.0) {
+                t = 1.0;
+                s = std::clamp((b - c) / a, 0.0, 1.0);
+            }
+        }
+    }
+    return ((a0 + d1 * s) - (b0 + d2 * t)).norm();
+}
+
+void Defence::reset() {
+    for (Hand& hand : m_hands) hand = Hand{};
+    m_move = DefenceMove::none;
+    m_move_hand = -1;
+    m_weight = 0.0;
+}
+
+void Defence::push(const UserStrikeEvent& event) {
+    if (m_event_count < static_cast<int>(m_events.size())) m_events[m_event_count++] = event;
+}
+
+void Defence::end_strike(double t_s, Hand& hand, UserStrikeOutcome outcome) {
+    UserStrikeEvent event = hand.strike;
+    event.ended = true;
+    event.t_s = t_s;
+    event.outcome = outcome;
+    event.forearm_to_path_m = event.move == DefenceMove::block ? hand.closest_forearm_m : -1.0;
+    push(event);
+    hand.striking = false;
+    hand.armed = false;
+}
+
+bool Defence::block_plan(const Hand& hand, const DefenderBody& body, double time_to_impact, Eigen::Vector3d& wrist_target, int& arm) const {
+    const double speed = hand.velocity.norm();
+    // The fighter's arm on the side the hand comes from (+X of its heading frame is its left).
+    arm = body.heading.to_heading(hand.position).x() >= 0.0 ? 0 : 1;
+    // Where the forearm meets the course: block_before_m short of the target, else half that (more time).
+    for (const double before : {m_settings.block_before_m, 0.5 * m_settings.block_before_m}) {
+        const double intercept_s = time_to_impact - before / speed;
+        const Eigen::Vector3d intercept = hand.position + hand.velocity * std::max(0.0, intercept_s);
+        const double travel = (intercept - body.wrist[arm]).norm();
+        const bool within_arm = (intercept - body.shoulder[arm]).norm() <= 0.95 * body.arm_length[arm];
+        if (intercept_s > 0.02 && within_arm && travel / intercept_s <= m_settings.max_block_speed_mps) {
+            wrist_target = intercept;
+            return true;
+        }
+    }
+    return false;
+}
+
+void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, double time_to_impact) {
+    Eigen::Vector3d wrist_target;
+    int arm = 0;
+    if (block_plan(hand, body, time_to_impact, wrist_target, arm)) {
+        m_move = DefenceMove::block;
+        m_arm = arm;
+        m_wrist_target = wrist_target;
+        const double intercept_s = std::max(0.02, time_to_impact - m_settings.block_before_m / hand.velocity.norm());
+        m_ramp_s = std::max(0.03, 0.6 * intercept_s); // in place a little before the hand
+    } else {
+        // Off the line: from the course's closest point to the head, sideways; straight at the head, to the side
+        // the course does not favour.
+        const Eigen::Vector3d closest = hand.position + hand.velocity * time_to_impact;
+        Eigen::Vector3d away = body.head - closest;
+        away.y() = 0.0;
+        if (away.norm() < 0.03) {
+            away = Eigen::Vector3d::UnitY().cross(hand.velocity);
+            away.y() = 0.0;
+        }
+        m_move = DefenceMove::slip;
+        m_slip_offset = away.norm() > 1e-9 ? Eigen::Vector3d(away.normalized() * m_settings.slip_m) : Eigen::Vector3d(m_settings.slip_m, 0.0, 0.0);
+        m_ramp_s = std::max(0.03, 0.8 * time_to_impact);
+    }
+    m_move_start_s = t_s;
+    m_hold_until_s = t_s + time_to_impact + m_settings.hold_s;
+    m_move_hand = static_cast<int>(&hand - m_hands.data());
+    hand.strike.move = m_move;
+    hand.strike.arm = m_arm;
+}
+
+void Defence::update(double t_s, const UserHands& hands, const DefenderBody& body, bool can_start) {
+    // The move's weight: in over its ramp, held until after the hand's arrival, then out.
+    if (m_move != DefenceMove::none) {
+        if (t_s <= m_hold_until_s) {
+            m_weight = smoothstep((t_s - m_move_start_s) / m_ramp_s);
+        } else {
+            const double out = smoothstep((t_s - m_hold_until_s) / m_settings.release_s);
+            m_weight = std::min(m_weight, 1.0 - out);
+            if (out >= 1.0) {
+                m_move = DefenceMove::none;
+                m_weight = 0.0;
+            }
+        }
+    }
+    for (int side = 0; side < 2; ++side) {
+        Hand& hand = m_hands[side];
+        if (!hands.present[side]) {
+            if (hand.striking) end_strike(t_s, hand, hand.strike.move == DefenceMove::slip ? UserStrikeOutcome::slipped : UserStrikeOutcome::missed);
+            hand.seen = false;
+            continue;
+        }
+        const Eigen::Vector3d now = hands.world[side];
+        if (!hand.seen || t_s - hand.last_s > 0.25) {
+            hand = Hand{};
+            hand.seen = true;
+            hand.position = now;
+            hand.last_s = t_s;
+            continue;
+        }
+        const double dt = t_s - hand.last_s;
+        if (dt <= 1e-6) continue;
+        const Eigen::Vector3d before = hand.position;
+        hand.velocity = 0.3 * hand.velocity + 0.7 * (now - before) / dt;
+        hand.position = now;
+        hand.last_s = t_s;
+
+        if (hand.striking) {
+            // Its path this frame against the blocking forearm, the head and the chest.
+            const bool blocking = m_move == DefenceMove::block && m_move_hand == side;
+            if (blocking && hand.velocity.norm() >= m_settings.min_speed_mps) {
+                // The course is known better each frame (the first estimate mixes in the draw back): re-aim.
+                const Eigen::Vector3d target = hand.strike.at_head ? body.head : body.chest;
+                const double speed = hand.velocity.norm();
+                const double arrival = (target - now).dot(hand.velocity) / (speed * speed);
+                Eigen::Vector3d wrist_target;
+                int arm = 0;
+                if (arrival > 0.0 && block_plan(hand, body, arrival, wrist_target, arm) && arm == m_arm) m_wrist_target = wrist_target;
+            }
+            if (blocking) {
+                const double to_forearm = segment_distance(before, now, body.elbow[m_arm], body.wrist[m_arm]);
+                hand.closest_forearm_m = std::min(hand.closest_forearm_m, to_forearm);
+                if (to_forearm <= m_settings.block_contact_m) {
+                    end_strike(t_s, hand, UserStrikeOutcome::blocked);
+                    continue;
+                }
+            }
+            if (segment_distance(before, now, body.head, body.head) <= m_settings.head_radius_m ||
+                segment_distance(before, now, body.chest, body.chest) <= m_settings.chest_radius_m) {
+                end_strike(t_s, hand, UserStrikeOutcome::hit_by_user);
+                continue;
+            }
+            const bool receding = hand.velocity.dot(body.chest - now) < 0.0;
+            hand.receding_frames = receding ? hand.receding_frames + 1 : 0;
+            if (hand.receding_frames >= 3 || t_s - hand.strike.t_s > 1.0) {
+                end_strike(t_s, hand, hand.strike.move == DefenceMove::slip ? UserStrikeOutcome::slipped : UserStrikeOutcome::missed);
+            }
+            continue;
+        }
+        // A threat: a fast hand whose straight course passes near the head or chest soon (one strike per thrust).
+        const double speed = hand.velocity.norm();
+        if (!hand.armed) {
+            hand.armed = speed < m_settings.min_speed_mps; // the thrust is over (a blocked hand, in the room, stops)
+            continue;
+        }
+        if (speed < m_settings.min_speed_mps) continue;
+        double best_miss = m_settings.threat_radius_m, best_time = 0.0;
+        int aimed = -1; // 0 head, 1 chest
+        for (int part = 0; part < 2; ++part) {
+            const Eigen::Vector3d to_part = (part == 0 ? body.head : body.chest) - now;
+            const double arrival = to_part.dot(hand.velocity) / (speed * speed);
+            if (arrival <= 0.0 || arrival > m_settings.horizon_s) continue;
+            const double miss = (to_part - hand.velocity * arrival).norm();
+            if (miss <= best_miss) best_miss = miss, best_time = arrival, aimed = part;
+        }
+        if (aimed < 0) continue;
+        hand.striking = true;
+        hand.closest_forearm_m = 1e9;
+        hand.receding_frames = 0;
+        hand.strike = UserStrikeEvent{};
+        hand.strike.t_s = t_s;
+        hand.strike.hand = side;
+        hand.strike.at_head = aimed == 0;
+        hand.strike.time_to_impact_s = best_time;
+        hand.strike.hand_speed_mps = speed;
+        if (m_settings.enabled && can_start && m_move == DefenceMove::none) {
+            start_move(t_s, hand, body, best_time);
+        }
+        push(hand.strike);
+    }
+}
+
+} // namespace kumite

@@ -1,0 +1,109 @@
+// Defence against the user's strikes: segment distances, a fast hand coming at the head is a user strike that is
+// blocked with the arm on its side (or slipped when there is no time), a hand that passes wide or moves slowly is
+// not one, and with defence off a punch that arrives is `hit_by_user`.
+
+#include "kumite/runtime/defence.h"
+#include "kumite/core/split_mix.h"
+
+#include <catch2/catch.hpp>
+
+#include <vector>
+
+using namespace kumite;
+
+namespace {
+
+// A fighter at the origin facing +Z (its left is +X), in a guard.
+DefenderBody guard_body() {
+    DefenderBody body;
+    body.head = {0.0, 1.6, 0.0};
+    body.chest = {0.0, 1.3, 0.0};
+    body.shoulder = {Eigen::Vector3d(0.18, 1.42, 0.0), Eigen::Vector3d(-0.18, 1.42, 0.0)};
+    body.elbow = {Eigen::Vector3d(0.2, 1.15, 0.15), Eigen::Vector3d(-0.2, 1.15, 0.15)};
+    body.wrist = {Eigen::Vector3d(0.12, 1.4, 0.3), Eigen::Vector3d(-0.12, 1.4, 0.3)};
+    body.arm_length = {0.6, 0.6};
+    return body;
+}
+
+// Runs a straight thrust of the user's hand `side` from `from` to `to` at `speed`, then holds; the fighter's
+// blocking forearm is put where the defence asks (wrist at the target, elbow 0.25 m below) when `follow`.
+std::vector<UserStrikeEvent> thrust(Defence& defence, int side, const Eigen::Vector3d& from, const Eigen::Vector3d& to, double speed, bool follow) {
+    std::vector<UserStrikeEvent> events;
+    DefenderBody body = guard_body();
+    const double out_s = (to - from).norm() / speed;
+    for (int frame = 0; frame < 60; ++frame) {
+        const double t = frame / 60.0;
+        const double thrust = t - 0.2; // still for 0.2 s first
+        UserHands hands;
+        hands.present = {true, true};
+        hands.world[1 - side] = Eigen::Vector3d(side == 0 ? 0.2 : -0.2, 1.35, 0.7);
+        hands.world[side] = thrust <= 0.0 ? from : thrust >= out_s ? to : Eigen::Vector3d(from + (to - from) * (thrust / out_s));
+        if (follow && defence.block_weight() > 0.0) {
+            const int arm = defence.block_arm();
+            const Eigen::Vector3d wrist = body.wrist[arm] + defence.block_weight() * (defence.block_wrist_target() - body.wrist[arm]);
+            body = guard_body();
+            body.wrist[arm] = wrist;
+            body.elbow[arm] = wrist - Eigen::Vector3d(0.0, 0.25, 0.0);
+        }
+        defence.update(t, hands, body, true);
+        for (const UserStrikeEvent& event : defence.events()) events.push_back(event);
+        defence.clear_events();
+    }
+    return events;
+}
+
+} // namespace
+
+TEST_CASE("defence: segment distance agrees with dense sampling", "[runtime]") {
+    SplitMix64 random{2};
+    for (int trial = 0; trial < 200; ++trial) {
+        Eigen::Vector3d p[4];
+        for (Eigen::Vector3d& point : p) point = Eigen::Vector3d(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
+        if (trial % 10 == 0) p[1] = p[0]; // a degenerate one
+        double sampled = 1e9;
+        for (int i = 0; i <= 200; ++i) {
+            for (int j = 0; j <= 200; ++j) {
+                sampled = std::min(sampled, ((p[0] + (p[1] - p[0]) * (i / 200.0)) - (p[2] + (p[3] - p[2]) * (j / 200.0))).norm());
+            }
+        }
+        const double exact = segment_distance(p[0], p[1], p[2], p[3]);
+        CHECK(exact <= sampled + 1e-9);
+        CHECK(exact >= sampled - 0.02);
+    }
+}
+
+TEST_CASE("defence: a punch at the head is blocked with the arm on its side; without defence it lands", "[runtime]") {
+    // The user's left hand (on the fighter's right, -X) thrusts at the head from 0.8 m at 6 m/s.
+    const Eigen::Vector3d from(-0.15, 1.45, 0.8), to(0.0, 1.6, 0.0);
+    Defence defence;
+    const std::vector<UserStrikeEvent> events = thrust(defence, 0, from, to, 6.0, true);
+    REQUIRE(events.size() == 2);
+    CHECK_FALSE(events[0].ended);
+    CHECK(events[0].at_head);
+    CHECK(events[0].move == DefenceMove::block);
+    CHECK(events[0].arm == 1); // the fighter's right arm
+    CHECK(events[0].time_to_impact_s > 0.05);
+    CHECK(events[1].ended);
+    CHECK(events[1].outcome == UserStrikeOutcome::blocked);
+    CHECK(events[1].forearm_to_path_m <= 0.05);
+
+    Defence off(DefenceSettings{.enabled = false});
+    const std::vector<UserStrikeEvent> landed = thrust(off, 0, from, to, 6.0, true);
+    REQUIRE(landed.size() == 2);
+    CHECK(landed[0].move == DefenceMove::none);
+    CHECK(landed[1].outcome == UserStrikeOutcome::hit_by_user);
+}
+
+TEST_CASE("defence: too late to block, it slips; wide or slow hands are not strikes", "[runtime]") {
+    // From 0.3 m at 8 m/s: under 0.04 s to impact, no wrist gets there: a slip.
+    Defence late;
+    const std::vector<UserStrikeEvent> events = thrust(late, 1, Eigen::Vector3d(0.05, 1.55, 0.3), Eigen::Vector3d(0.0, 1.6, 0.0), 8.0, false);
+    REQUIRE(!events.empty());
+    CHECK(events[0].move == DefenceMove::slip);
+    CHECK(late.slip_offset().norm() == Approx(late.settings().slip_m));
+    CHECK(late.slip_offset().y() == 0.0);
+    // Passing 0.6 m to the side, or at 1.5 m/s: nothing.
+    Defence wide, slow;
+    CHECK(thrust(wide, 0, Eigen::Vector3d(0.6, 1.5, 0.8), Eigen::Vector3d(0.6, 1.6, -0.5), 6.0, false).empty());
+    CHECK(thrust(slow, 0, Eigen::Vector3d(-0.15, 1.45, 0.8), Eigen::Vector3d(0.0, 1.6, 0.1), 1.5, false).empty());
+}
