@@ -2,7 +2,9 @@
 // wandering simulated user for --seconds of simulated time, every fighter ordered to strike every 2 s (all at
 // once: the worst frame). Reports frame time (mean, median, p99, max) per count, the frames over the 16.7 ms
 // budget, command -> first strike frame latency, and as a baseline measured in the same run the same fighters
-// never ordered (guard and steps only). Heap allocations inside the stepping are counted (must be 0).
+// never ordered (guard and steps only). Defence's cost: the same fighters, never ordered, against a user whose
+// hands punch at the middle fighter (in front of them) every 2 s, with defence on and off. Heap allocations inside the stepping are
+// counted (must be 0).
 //
 // usage: player_bench DB.kdb [--fighters 1,10,100,200] [--seconds S] [--character NAME] [--characters-dir DIR]
 
@@ -37,16 +39,21 @@ struct Run {
     std::vector<double> latency_frames;
     long allocations = 0;
     int strikes = 0;
+    int user_strikes_defended = 0;
 };
 
-Run run(const MotionDatabaseView& db, const Retriever& retriever, CharacterRig& rig, int count, double seconds, bool orders) {
+enum class Opponent { wandering, punching_defended, punching_undefended };
+
+Run run(const MotionDatabaseView& db, const Retriever& retriever, CharacterRig& rig, int count, double seconds, bool orders,
+        Opponent opponent = Opponent::wandering) {
     std::vector<std::unique_ptr<Fighter>> fighters;
     for (int i = 0; i < count; ++i) {
         FighterSettings settings;
         settings.start_x_m = (i - 0.5 * (count - 1)) * 1.2;
+        settings.defence.enabled = opponent != Opponent::punching_undefended;
         fighters.push_back(std::make_unique<Fighter>(db, retriever, std::vector<CharacterRig*>{&rig}, settings));
     }
-    SimulatedUser user(SimulatedKind::wander, 1);
+    SimulatedUser user(opponent == Opponent::wandering ? SimulatedKind::wander : SimulatedKind::punch, 1);
     Run result;
     std::vector<long> ordered_at(count, -1);
     const long frames = static_cast<long>(seconds * 60.0);
@@ -54,20 +61,25 @@ Run run(const MotionDatabaseView& db, const Retriever& retriever, CharacterRig& 
     result.latency_frames.reserve(std::size_t(frames) * count);
     for (long frame = 0; frame < frames; ++frame) {
         const double t = frame / 60.0;
+        const Fighter& facing = *fighters[count / 2]; // the middle one stands in front of the user
+        user.set_opponent(facing.part_position(BodyPart::head), facing.part_position(BodyPart::chest));
         const Eigen::Vector3d head = user.head(t);
+        const UserHands hands = user.hands(t);
         kumite::test::allocation_count_reset();
         kumite::test::allocation_counting(frame > 0);
         const auto started = Clock::now();
         const bool order_now = orders && frame >= 120 && frame % 120 == 0;
         for (int i = 0; i < count; ++i) {
             if (order_now && fighters[i]->order(retriever.semantics_id(frame % 240 ? "punch" : "kick"), Side::none)) ordered_at[i] = frame;
-            fighters[i]->step(t, &head);
+            fighters[i]->step(t, &head, &hands);
             for (const FighterEvent& event : fighters[i]->events()) {
                 if (event.type == FighterEvent::Type::state && event.state == FighterState::strike && ordered_at[i] >= 0) {
                     result.latency_frames.push_back(double(frame - ordered_at[i]));
                     ordered_at[i] = -1;
                 }
                 result.strikes += event.type == FighterEvent::Type::strike;
+                result.user_strikes_defended += event.type == FighterEvent::Type::user_strike_end &&
+                                                (event.user_strike.outcome == UserStrikeOutcome::blocked || event.user_strike.outcome == UserStrikeOutcome::slipped);
             }
             fighters[i]->clear_events();
         }
@@ -124,6 +136,8 @@ int main(int argc, char** argv) {
     for (int count : counts) {
         const Run fighting = run(database->view(), retriever, rig, count, seconds, true);
         const Run guarding = run(database->view(), retriever, rig, count, seconds, false);
+        const Run defending = run(database->view(), retriever, rig, count, seconds, false, Opponent::punching_defended);
+        const Run undefended = run(database->view(), retriever, rig, count, seconds, false, Opponent::punching_undefended);
         const long over_budget = std::count_if(fighting.frame_us.begin(), fighting.frame_us.end(), [](double us) { return us > 1e6 / 60.0; });
         report["fighters"][std::to_string(count)] = {
             {"frame_time_us", summary(fighting.frame_us)},
@@ -131,7 +145,12 @@ int main(int argc, char** argv) {
             {"strikes", fighting.strikes},
             {"command_to_strike_frames", summary(fighting.latency_frames)},
             {"allocations", fighting.allocations},
-            {"baseline_guard_only_frame_time_us", summary(guarding.frame_us)}};
+            {"baseline_guard_only_frame_time_us", summary(guarding.frame_us)},
+            {"against_punches_frame_time_us",
+             {{"defence_on", summary(defending.frame_us)},
+              {"defence_off", summary(undefended.frame_us)},
+              {"defended", defending.user_strikes_defended},
+              {"allocations", defending.allocations + undefended.allocations}}}};
     }
     std::cout << report.dump(2) << "\n";
     return 0;
