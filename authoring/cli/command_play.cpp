@@ -26,21 +26,22 @@ namespace kumite::cli {
 const CommandSpec& play_spec() {
     static const CommandSpec spec{
         "play",
-        "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:BODY] | replay:FILE | simulate:still|wander|dodge|FILE] "
-        "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] [--record OUT.bvh] "
-        "[--events OUT.jsonl] [--report OUT.json]",
-        "Runs the fighter at 60 Hz against the user's head (a DTrack system, a replayed CSV of t,x,y,z, or a\n"
+        "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:HEAD[,LEFT,RIGHT]] | replay:FILE | simulate:KIND|FILE] "
+        "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] "
+        "[--aim latched|predicted] [--no-defence] [--record OUT.bvh] [--events OUT.jsonl] [--report OUT.json]",
+        "Runs the fighter at 60 Hz against the user's head and hands (a DTrack system, a replayed CSV, or a\n"
         "simulated user) and the supervisor's commands, one per line: punch [left|right], kick [left|right],\n"
-        "character NAME, quit (in a script file, each line starts with its time in seconds; on stdin or TCP on\n"
-        "127.0.0.1 they apply when they arrive). Headless runs use a simulated clock unless --realtime or the\n"
-        "tracker is live. With a display and without --headless the viewer opens (keys listed on screen; it runs until\n"
-        "closed, or for --duration when given). Without DB.kdb: $KUMITE_DB, else the reference annotations baked once\n"
+        "character NAME, aim latched|predicted, defence on|off, quit (in a script file, each line starts with its\n"
+        "time in seconds; on stdin or TCP on 127.0.0.1 they apply when they arrive). Headless runs use a simulated\n"
+        "clock unless --realtime or the tracker is live. With a display and without --headless the viewer opens\n"
+        "(keys listed on screen; it runs until closed, or for --duration when given). Without DB.kdb: $KUMITE_DB, else the reference annotations baked once\n"
         "and cached (baked again when they or their captures change).",
         0, 1,
         {{"character", "NAME", "the starting character (default: the first of data/characters)"},
          {"fighters", "N", "fighters side by side against the same user (default 1)"},
-         {"tracker", "SOURCE", "dtrack:PORT[:BODY] (no BODY: the only 6d body, else the 3d markers' centroid), replay:FILE.csv, or\n"
-                              "simulate:still|wander|walk[:SPEED]|dodge|FILE (a user script; default simulate:still)"},
+         {"tracker", "SOURCE", "dtrack:PORT[:BODY] (no BODY: the only 6d body, else the 3d markers' centroid), dtrack:PORT:HEAD,LEFT,RIGHT\n"
+                              "(the hands too: 6d body or 3d marker ids), replay:FILE.csv (t,x,y,z[,lx,ly,lz,rx,ry,rz]), or\n"
+                              "simulate:still|wander|walk[:SPEED]|dodge|punch|FILE (a user script; default simulate:still)"},
          {"tracker-config", "FILE.json", "the room: bind address, room-to-world transform, room bounds (dtrack)"},
          {"commands", "SOURCE", "stdin, tcp:PORT (127.0.0.1) or script:FILE ('<time_s> <command>' per line)"},
          {"headless", "", "no window"},
