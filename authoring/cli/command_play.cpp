@@ -140,6 +140,13 @@ nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
 
 nlohmann::json play_report_json(const Bout& bout) {
     const BoutCounters& counters = bout.counters();
+    nlohmann::json by_target;
+    for (int target = 0; target < 2; ++target) {
+        for (UserStrikeOutcome outcome : {UserStrikeOutcome::blocked, UserStrikeOutcome::slipped, UserStrikeOutcome::hit_by_user, UserStrikeOutcome::missed}) {
+            by_target[target == 0 ? "head" : "chest"][user_strike_outcome_name(outcome)] =
+                counters.user_outcomes_by_target[target][static_cast<int>(outcome)];
+        }
+    }
     const double mean_latency = counters.command_to_strike_frames.mean(), max_latency = counters.command_to_strike_frames.max();
     return {{"frames", counters.frames},
             {"fighters", bout.fighter_count()},
@@ -169,7 +176,8 @@ nlohmann::json play_report_json(const Bout& bout) {
               {"slipped", counters.slipped}, {"hit_by_user", counters.hit_by_user}, {"missed", counters.user_missed},
               {"forearm_to_path_m", quantiles_of(counters.forearm_to_path_m)},
               {"joint_limit_violations", counters.defence_joint_limit_violations},
-              {"foot_shift_m", counters.defence_foot_shift_m}}}};
+              {"foot_shift_m", counters.defence_foot_shift_m},
+              {"by_target", by_target}}}};
 }
 
 int run_play(int argc, char** argv) {

@@ -180,6 +180,7 @@ void Bout::step(double t_s) {
                 case UserStrikeOutcome::hit_by_user: ++m_counters.hit_by_user; break;
                 case UserStrikeOutcome::missed: ++m_counters.user_missed; break;
                 }
+                ++m_counters.user_outcomes_by_target[event.user_strike.at_head ? 0 : 1][static_cast<int>(event.user_strike.outcome)];
                 if (event.user_strike.forearm_to_path_m >= 0.0) m_counters.forearm_to_path_m.add(event.user_strike.forearm_to_path_m);
                 m_counters.defence_joint_limit_violations += event.joint_limit_violations;
                 m_counters.defence_foot_shift_m = std::max(m_counters.defence_foot_shift_m, event.foot_shift_m);

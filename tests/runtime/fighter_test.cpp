@@ -115,12 +115,22 @@ TEST_CASE("fighter: a punching user's strikes are blocked or slipped with defenc
             settings.defence.enabled = defend;
             Bout b(content->view(), character, settings);
             SimulatedUser user(SimulatedKind::punch, 4);
+            const RestAnatomy& anatomy = b.brawler.rig->anatomy();
+            double bone_error = 0.0;
             for (int frame = 0; frame < 30 * 60; ++frame) {
                 const double t = frame / 60.0;
                 user.set_opponent(b.fighter->part_position(BodyPart::head), b.fighter->part_position(BodyPart::chest));
                 const Eigen::Vector3d head = user.head(t);
                 const UserHands hands = user.hands(t);
                 b.fighter->step(t, &head, &hands);
+                if (b.fighter->defence().active()) { // the arms keep their bones while blocking or slipping
+                    const auto positions = b.fighter->positions();
+                    for (const Limb arm : {Limb::arm_l, Limb::arm_r}) {
+                        const LimbChain& limb = anatomy.limbs[int(arm)];
+                        bone_error = std::max(bone_error, std::abs((positions[limb.middle] - positions[limb.root]).norm() - limb.upper_length));
+                        bone_error = std::max(bone_error, std::abs((positions[limb.extremity] - positions[limb.middle]).norm() - limb.lower_length));
+                    }
+                }
                 for (const FighterEvent& event : b.fighter->events()) b.events.push_back(event);
                 b.fighter->clear_events();
             }
@@ -143,6 +153,7 @@ TEST_CASE("fighter: a punching user's strikes are blocked or slipped with defenc
                 CHECK(far_blocks == 0);
                 CHECK(violations == 0);
                 CHECK(foot_shift < 1e-6);
+                CHECK(bone_error < 1e-9);
             } else {
                 CHECK(landed >= 0.8 * seen);
             }
