@@ -128,7 +128,8 @@ void Bout::step(double t_s) {
     m_events.clear();
     // Simulated users punch at the first fighter as it was last frame.
     const Fighter& first = *m_fighters.front();
-    m_tracker->set_opponent(first.part_position(BodyPart::head), first.part_position(BodyPart::chest));
+    m_tracker->set_opponent(first.part_position(BodyPart::head), first.part_position(BodyPart::chest),
+                            first.state() != FighterState::strike && first.state() != FighterState::recover);
     const Eigen::Vector3d* head = m_tracker->head(t_s);
     if (const char* notice = m_tracker->take_notice()) {
         if (m_stream) m_stream->reply(notice);

@@ -25,7 +25,7 @@ Result<std::unique_ptr<HeadTracker>> HeadTracker::open(std::string_view spec_vie
             if (!read) return read.error();
             tracker->m_scripted = std::move(*read);
         } else {
-            return make_error(ErrorCode::invalid, "--tracker simulate: takes still, wander, walk[:SPEED], dodge, punch or a user script file, not '" + name + "'");
+            return make_error(ErrorCode::invalid, "--tracker simulate: takes still, wander, walk[:SPEED], dodge, punch, counter or a user script file, not '" + name + "'");
         }
     } else if (spec.starts_with("dtrack:")) {
         int port = 0, body = config.head_body, left = -1, right = -1;
@@ -48,13 +48,13 @@ Result<std::unique_ptr<HeadTracker>> HeadTracker::open(std::string_view spec_vie
         if (!read) return read.error();
         tracker->m_replay = std::move(*read);
     } else {
-        return make_error(ErrorCode::invalid, "--tracker must be dtrack:PORT[:HEAD[,LEFT,RIGHT]], replay:FILE or simulate:still|wander|walk[:SPEED]|dodge|punch|FILE, not '" + spec + "'");
+        return make_error(ErrorCode::invalid, "--tracker must be dtrack:PORT[:HEAD[,LEFT,RIGHT]], replay:FILE or simulate:still|wander|walk[:SPEED]|dodge|punch|counter|FILE, not '" + spec + "'");
     }
     return tracker;
 }
 
-void HeadTracker::set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest) {
-    if (m_simulated) m_simulated->set_opponent(head, chest);
+void HeadTracker::set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest, bool guarding) {
+    if (m_simulated) m_simulated->set_opponent(head, chest, guarding);
     if (m_scripted) m_scripted->set_opponent(head, chest);
 }
 

@@ -23,11 +23,14 @@ std::optional<SimulatedKind> simulated_kind_from_name(std::string_view name) {
     if (name == "walk") return SimulatedKind::walk;
     if (name == "dodge") return SimulatedKind::dodge;
     if (name == "punch") return SimulatedKind::punch;
+    if (name == "counter") return SimulatedKind::counter;
     return std::nullopt;
 }
 
 SimulatedUser::SimulatedUser(SimulatedKind kind, std::uint64_t seed, double walk_speed_mps)
-    : m_kind(kind), m_random{seed}, m_walk_speed_mps(walk_speed_mps) {}
+    : m_kind(kind), m_random{seed}, m_walk_speed_mps(walk_speed_mps) {
+    if (kind == SimulatedKind::counter) m_next_punch_s = 1e18; // only in reply
+}
 
 void SimulatedUser::on_order(double t_s) {
     if (m_kind != SimulatedKind::dodge) return;
@@ -39,7 +42,8 @@ Eigen::Vector3d SimulatedUser::head(double t_s) {
     const Eigen::Vector3d start = start_position();
     switch (m_kind) {
     case SimulatedKind::still:
-    case SimulatedKind::punch: return m_last_head = start;
+    case SimulatedKind::punch:
+    case SimulatedKind::counter: return m_last_head = start;
     case SimulatedKind::wander:
     case SimulatedKind::walk: {
         const bool walk = m_kind == SimulatedKind::walk;
@@ -68,12 +72,16 @@ Eigen::Vector3d SimulatedUser::head(double t_s) {
 }
 
 UserHands SimulatedUser::hands(double t_s) {
-    if (m_kind != SimulatedKind::punch) return {};
+    if (m_kind != SimulatedKind::punch && m_kind != SimulatedKind::counter) return {};
+    if (m_kind == SimulatedKind::counter) { // a reply when the fighter comes back to its guard, else none
+        if (m_opponent_guarding && !m_opponent_was_guarding) m_next_punch_s = t_s + 0.3;
+        m_opponent_was_guarding = m_opponent_guarding;
+    }
     if (t_s >= m_next_punch_s && m_hands.has_opponent()) {
         const double speed = m_random.uniform(4.0, 8.0);
         m_hands.punch(t_s, m_punches % 2, (m_punches / 2) % 2 == 0, speed, m_random.uniform(0.6, 1.0));
         ++m_punches;
-        m_next_punch_s = t_s + m_random.uniform(1.6, 2.4);
+        m_next_punch_s = m_kind == SimulatedKind::counter ? 1e18 : t_s + m_random.uniform(1.6, 2.4);
     }
     return m_hands.hands(t_s, m_last_head);
 }

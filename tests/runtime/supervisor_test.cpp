@@ -186,3 +186,22 @@ TEST_CASE("simulated hands: a punching user punches from the guard at the fighte
     still.head(0.0);
     CHECK_FALSE(still.hands(0.0).present[0]);
 }
+
+TEST_CASE("simulated hands: a countering user punches only in reply to the fighter's guard coming back", "[runtime]") {
+    SimulatedUser user(SimulatedKind::counter, 3);
+    const Eigen::Vector3d fighter_head(0.0, 1.7, 0.3), fighter_chest(0.0, 1.35, 0.25);
+    double first_arrival = -1.0;
+    for (int frame = 0; frame < 60 * 6; ++frame) {
+        const double t = frame / 60.0;
+        const bool guarding = !(t >= 3.0 && t < 4.0); // the fighter strikes from 3 s to 4 s
+        user.set_opponent(fighter_head, fighter_chest, guarding);
+        user.head(t);
+        const UserHands hands = user.hands(t);
+        REQUIRE(hands.present[0]);
+        const bool arrived = (hands.world[0] - fighter_head).norm() < 1e-6 || (hands.world[1] - fighter_head).norm() < 1e-6;
+        if (arrived && first_arrival < 0.0) first_arrival = t;
+    }
+    // Nothing while the guard stays; the reply lands 0.3 s after the guard is back, plus its draw and thrust.
+    REQUIRE(first_arrival > 4.0);
+    CHECK(first_arrival < 4.0 + 0.3 + SimulatedHands::k_draw_s + 0.3);
+}

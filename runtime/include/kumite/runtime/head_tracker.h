@@ -1,7 +1,7 @@
 #pragma once
 // The user's head, from whichever source the room has (ARCHITECTURE.md "Inputs from the room"), behind one
 // interface: `dtrack:PORT[:HEAD[,LEFT,RIGHT]]` (A.R.T. DTrack UDP, live; the hands are 6d bodies or 3d markers
-// by id), `replay:FILE` (a CSV of t,x,y,z[,lx,ly,lz,rx,ry,rz]), or `simulate:still|wander|walk[:SPEED]|dodge|punch|FILE`
+// by id), `replay:FILE` (a CSV of t,x,y,z[,lx,ly,lz,rx,ry,rz]), or `simulate:still|wander|walk[:SPEED]|dodge|punch|counter|FILE`
 // (a simulated or scripted user, deterministic with the seed). The user's hands come with the head, when tracked.
 
 #include "kumite/runtime/dtrack_receiver.h"
@@ -25,8 +25,9 @@ public:
     const Eigen::Vector3d* head(double t_s);
     // The hands of the frame head(t) read (none present when the source tracks no hands).
     const UserHands& hands() const { return m_hands; }
-    // Where the fighter's head and chest are: simulated users punch at them. Call before head(t).
-    void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest);
+    // Where the fighter's head and chest are, and whether it is in its guard (not striking or recovering):
+    // simulated users punch at them, some in reply to the guard's return. Call before head(t).
+    void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest, bool guarding = true);
     // A supervisor order went out at t: simulated users that dodge react to it.
     void on_order(double t_s);
 

@@ -7,7 +7,9 @@
 //   dodge  — like still, but 0.25 s after each order ducks 0.45 m or sidesteps 0.5 m (alternately) for 1 s.
 //   punch  — like still, with tracked hands that punch at the fighter from t = 3 s every 1.6-2.4 s: straight
 //            punches from 0.6-1.0 m, left and right in turn, at the head twice then the chest twice, at 4-8 m/s.
-// Only `punch` users have tracked hands.
+//   counter — like still, with tracked hands that reply: 0.3 s after each of the fighter's strikes, as it comes
+//            back to its guard, a straight punch as `punch` throws them.
+// Only `punch` and `counter` users have tracked hands.
 
 #include <Eigen/Core>
 
@@ -23,7 +25,7 @@
 
 namespace kumite {
 
-enum class SimulatedKind { still, wander, walk, dodge, punch };
+enum class SimulatedKind { still, wander, walk, dodge, punch, counter };
 std::optional<SimulatedKind> simulated_kind_from_name(std::string_view name);
 
 class SimulatedUser {
@@ -32,8 +34,12 @@ public:
 
     Eigen::Vector3d head(double t_s); // call with non-decreasing times
     void on_order(double t_s);        // the supervisor gave an order at t
-    // Where the fighter's head and chest are (before head(t)), and the hands at t (after it).
-    void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest) { m_hands.set_opponent(head, chest); }
+    // Where the fighter's head and chest are and whether it is in its guard (before head(t)), and the hands at t
+    // (after it).
+    void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest, bool guarding = true) {
+        m_hands.set_opponent(head, chest);
+        m_opponent_guarding = guarding;
+    }
     UserHands hands(double t_s);
 
     static constexpr double k_head_height_m = 1.65;
@@ -54,6 +60,7 @@ private:
     Eigen::Vector3d m_last_head = start_position();
     double m_next_punch_s = 3.0;
     int m_punches = 0;
+    bool m_opponent_guarding = true, m_opponent_was_guarding = true; // counter: replies when the guard comes back
 };
 
 // A user scripted in a file, one action per line, `<time_s> <action>` ('#' comments), applied in time order:
@@ -71,7 +78,7 @@ public:
 
     Eigen::Vector3d head(double t_s); // call with non-decreasing times
     void on_order(double t_s);
-    void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest) { m_hands.set_opponent(head, chest); }
+    void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest, bool = true) { m_hands.set_opponent(head, chest); }
     UserHands hands(double t_s); // after head(t)
 
 private:
