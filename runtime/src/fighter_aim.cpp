@@ -15,6 +15,9 @@ namespace {
 constexpr TargetPart k_target_parts[] = {TargetPart::head, TargetPart::chin, TargetPart::chest, TargetPart::solar_plexus};
 constexpr double k_target_drops_m[] = {0.0, 0.10, 0.30, 0.45};
 
+// How far under the user's head `part` is: the drop scaled by the user's size (head height / 1.65 m).
+double drop_under_head_m(int part, const Eigen::Vector3d& head) { return k_target_drops_m[part] * std::clamp(head.y() / 1.65, 0.5, 1.4); }
+
 } // namespace
 
 double Fighter::band_far_m() const {
@@ -29,9 +32,8 @@ double Fighter::strike_reach_m() const {
     const RestAnatomy& anatomy = body.rig->anatomy();
     const auto positions = body.decoder.model_positions();
     // At the head's height, else (reach fallback) at the highest body point under it the arms get to.
-    const double user_scale = std::clamp(m_head.y() / 1.65, 0.5, 1.4);
     for (int part = 0; part < (m_settings.reach_fallback ? 4 : 1); ++part) {
-        const double height = m_head.y() - k_target_drops_m[part] * user_scale;
+        const double height = m_head.y() - drop_under_head_m(part, m_head);
         double reach = 0.0;
         for (const Limb arm : {Limb::arm_l, Limb::arm_r}) {
             const LimbChain& limb = anatomy.limbs[int(arm)];
@@ -55,7 +57,6 @@ void Fighter::start_strike(double t_s) {
     query.side = m_pending_side;
     query.character = body.rig->size();
     // The head, else the highest point of the body a strike reaches.
-    const double user_scale = std::clamp(m_head.y() / 1.65, 0.5, 1.4);
     const int parts = m_settings.reach_fallback ? 4 : 1;
     // An order may wait a little: for reach (the approach goes on meanwhile), and with predicted aim while the user
     // is changing course (just turned, stopped or started: the extrapolation would be wrong).
@@ -69,7 +70,7 @@ void Fighter::start_strike(double t_s) {
     int part = first;
     bool reachable = false;
     for (; part < last; ++part) {
-        found = retrieve_strike(query, k_target_drops_m[part] * user_scale, target);
+        found = retrieve_strike(query, drop_under_head_m(part, m_head), target);
         if (!found.found) break;
         if (plan_strike(found, target) <= m_settings.reach_tolerance_m) {
             reachable = true;
@@ -82,8 +83,9 @@ void Fighter::start_strike(double t_s) {
         // that takes too long, it strikes at the head as the paper's fighter does.
         const bool closer_helps = m_state == FighterState::approach || (m_step_clips[0] >= 0 && distance_to_user() > band_far_m());
         // ... and when steps at the step clip's pace can close the gap in the time left to wait.
-        const double step_speed_mps = clip_stride_m(m_step_clips[0]) /
-                                      std::max(1e-3, (m_db.clips[std::max(0, m_step_clips[0])].frame_count - 1) * double(m_db.meta.frame_time_s));
+        const int step = m_step_clips[0];
+        const double step_s = step >= 0 ? (m_db.clips[step].frame_count - 1) * double(m_db.meta.frame_time_s) : 0.0;
+        const double step_speed_mps = step_s > 0.0 ? clip_stride_m(step) / step_s : 0.0;
         const double time_left_s = m_settings.wait_for_reach_s - (t_s - m_pending_since_s);
         const bool in_time = distance_to_user() - band_far_m() < step_speed_mps * time_left_s;
         // A walking user may also come within reach by themselves: predicted aim watches for it.
@@ -100,7 +102,7 @@ void Fighter::start_strike(double t_s) {
     m_pending = false;
     if (!found.found) return emit_ignored(t_s, "no strike of that kind can start from here");
     m_strike_part = k_target_parts[part];
-    m_strike_drop_m = k_target_drops_m[part] * user_scale;
+    m_strike_drop_m = drop_under_head_m(part, m_head);
     m_strike_reachable = reachable;
     m_strike_aim = m_settings.aim;
     m_strike_head_speed_mps = m_head_motion.velocity().norm();
