@@ -68,6 +68,8 @@ BakedClip bake_clip(const RawAnnotatedClip& annotation, bool mirrored, const Bak
     record.flags = (mirrored ? db_clip_mirrored : 0u) | (annotation.is_strike() ? db_clip_strike : 0u);
     const Side side = mirrored ? mirrored_side(annotation.side) : annotation.side;
     record.side = static_cast<std::uint32_t>(side);
+    record.kind = static_cast<std::uint8_t>(annotation.kind);     // a mirror is the same kind at the same height
+    record.height = static_cast<std::uint8_t>(annotation.height);
     int hit_joint = -1;
     if (annotation.segment) {
         const BodyPart segment = mirrored ? body_part_mirrored(*annotation.segment) : *annotation.segment;

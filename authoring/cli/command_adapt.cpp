@@ -19,7 +19,7 @@ namespace kumite::cli {
 const CommandSpec& adapt_spec() {
     static const CommandSpec spec{
         "adapt",
-        "[DB.kdb] --character NAME --target X,Y,Z --command punch|kick [--side left|right|any] --record OUT.bvh --report OUT.json",
+        "[DB.kdb] --character NAME --target X,Y,Z --command punch|kick [--side left|right|any] [--kind KIND] [--height H] --record OUT.bvh --report OUT.json",
         "Plays the strike the retrieval picks for a character standing at the origin (facing +Z, in the guard):\n"
         "a short guard hold, then the clip blended in, decoded onto the character, its hit segment driven onto\n"
         "the target at the clip's annotated hit frame by the constraint ramp (limb IK, then CCD over the trunk when\n"
@@ -31,6 +31,8 @@ const CommandSpec& adapt_spec() {
          {"target", "X,Y,Z", "the target, world metres"},
          {"command", "SEMANTICS", "punch, kick, or any strike semantics the database holds"},
          {"side", "left|right|any", "which side strikes (default any)"},
+         kind_flag(),
+         height_flag(),
          {"record", "OUT.bvh", "the adapted motion"},
          {"report", "OUT.json", "contact error, hit frame, overshoot, speed at contact, joint-limit violations, bone-length error,\n"
                                 "foot drift, support foot, per-frame cost"},
@@ -73,7 +75,7 @@ int run_adapt(int argc, char** argv) {
     RetrievalWorkspace workspace = setup.retriever->make_workspace();
     const RetrievalResult retrieved = setup.retriever->query(query, workspace);
     if (!retrieved.found) {
-        return input_error(setup.database_path + ": no " + *arguments.value("command") + " with side " + side_name(query.side) +
+        return input_error(setup.database_path + ": no " + strike_order_description(*arguments.value("command"), query.side, query.kind, query.height) +
                            " can start from the guard");
     }
 
@@ -112,6 +114,9 @@ int run_adapt(int argc, char** argv) {
         {"frame_cost_us", cost_json(playback.frame_cost_us)},
         {"frames", playback.motion.frame_count()},
         {"clip", db.string(clip.name)},
+        {"kind", strike_kind_name(clip.strike_kind())},
+        {"height", strike_height_name(clip.strike_height())},
+        {"side", side_name(static_cast<Side>(clip.side))},
         {"start_frame", retrieved.start_frame},
         {"retrieval_contact_frame", retrieved.contact_frame},
         {"offset_to_fix_m", (retrieved.contact_point_world - *target).norm()}};

@@ -8,7 +8,10 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <algorithm>
 #include <map>
+#include <tuple>
+#include <vector>
 
 namespace kumite::cli {
 
@@ -17,8 +20,8 @@ const CommandSpec& db_info_spec() {
         "db-info",
         "DB.kdb [--verify] [--json]",
         "Maps and validates a motion database (header, sections, every index and value) and summarises it:\n"
-        "clips, poses, clusters, actors and strikes by semantics and side. --verify also checks the content\n"
-        "hash. A corrupt, truncated or foreign file exits with status 1 and says what is wrong and where.",
+        "clips, poses, clusters, actors and strikes by semantics and side, and by semantics x kind x height x\n"
+        "side (the strikes' labels). --verify also checks the content hash. A corrupt, truncated or foreign file exits with status 1 and says what is wrong and where.",
         1, 1,
         {{"verify", "", "also recompute the content hash"}, json_flag()}};
     return spec;
@@ -34,15 +37,35 @@ nlohmann::json summary_json(const MotionDatabase& database, double open_us, bool
     const MotionDatabaseView& db = database.view();
     nlohmann::json strikes = {{"punch", {{"left", 0}, {"right", 0}}}, {"kick", {{"left", 0}, {"right", 0}}}};
     nlohmann::json motions = nlohmann::json::object();
+    nlohmann::json kinds = nlohmann::json::object(), heights = nlohmann::json::object();
+    std::map<std::tuple<std::string, int, int, std::uint32_t>, int> labels; // semantics, kind, height, side
+    int strikes_captured = 0; // before mirroring
+    std::vector<std::uint32_t> strike_actors;
     for (const DbClip& clip : db.clips) {
         const std::string semantics(db.string(clip.semantics));
         if (db_clip_is_strike(clip)) {
+            const auto count_in = [&](nlohmann::json& table, const char* label) {
+                nlohmann::json& counts = table[semantics][label];
+                if (counts.is_null()) counts = {{"left", 0}, {"right", 0}};
+                counts[side_name(clip.side)] = counts.value(side_name(clip.side), 0) + 1;
+            };
+            count_in(kinds, strike_kind_name(clip.strike_kind()));
+            count_in(heights, strike_height_name(clip.strike_height()));
+            ++labels[{semantics, clip.kind, clip.height, clip.side}];
+            strikes_captured += (clip.flags & db_clip_mirrored) == 0;
+            if (std::find(strike_actors.begin(), strike_actors.end(), clip.actor) == strike_actors.end()) strike_actors.push_back(clip.actor);
             nlohmann::json& counts = strikes[semantics];
             if (counts.is_null()) counts = {{"left", 0}, {"right", 0}};
             counts[side_name(clip.side)] = counts.value(side_name(clip.side), 0) + 1;
         } else {
             motions[semantics] = motions.value(semantics, 0) + 1;
         }
+    }
+    nlohmann::json label_list = nlohmann::json::array();
+    for (const auto& [key, count] : labels) {
+        const auto& [semantics, kind, height, side] = key;
+        label_list.push_back({{"semantics", semantics}, {"kind", strike_kind_name(static_cast<StrikeKind>(kind))},
+                              {"height", strike_height_name(static_cast<StrikeHeight>(height))}, {"side", side_name(side)}, {"clips", count}});
     }
     nlohmann::json actors = nlohmann::json::array();
     for (const DbActor& actor : db.actors) {
@@ -65,6 +88,11 @@ nlohmann::json summary_json(const MotionDatabase& database, double open_us, bool
             {"actors", db.actors.size()},
             {"actor_list", actors},
             {"strikes", strikes},
+            {"strikes_before_mirroring", strikes_captured},
+            {"strike_actors", strike_actors.size()},
+            {"kinds", kinds},
+            {"heights", heights},
+            {"labels", label_list},
             {"motions", motions},
             {"frame_time_s", db.meta.frame_time_s},
             {"sections", sections},
@@ -93,7 +121,21 @@ int run_db_info(int argc, char** argv) {
     for (const auto& [semantics, counts] : summary["strikes"].items()) {
         std::cout << "  " << semantics << ": " << counts["left"] << " left, " << counts["right"] << " right\n";
     }
+    std::cout << "  " << summary["strikes_before_mirroring"] << " strikes before mirroring, from " << summary["strike_actors"] << " actors\n";
     for (const auto& [semantics, count] : summary["motions"].items()) std::cout << "  " << semantics << ": " << count << "\n";
+    std::cout << "  strikes by kind, height and side:\n";
+    std::string last;
+    for (const auto& row : summary["labels"]) {
+        const std::string what = row["semantics"].get<std::string>() + " " + row["kind"].get<std::string>() + " " + row["height"].get<std::string>();
+        if (what == last) continue;
+        last = what;
+        int left = 0, right = 0;
+        for (const auto& other : summary["labels"]) {
+            if (other["semantics"] != row["semantics"] || other["kind"] != row["kind"] || other["height"] != row["height"]) continue;
+            (other["side"] == "left" ? left : right) += other["clips"].get<int>();
+        }
+        std::printf("    %-28s %3d left, %3d right\n", what.c_str(), left, right);
+    }
     std::printf("  opened in %.0f us\n", open_us);
     return k_exit_ok;
 }

@@ -16,7 +16,7 @@ namespace kumite::cli {
 const CommandSpec& query_spec() {
     static const CommandSpec spec{
         "query",
-        "[DB.kdb] --character NAME (--target X,Y,Z | --targets FILE.csv) --command SEMANTICS [--side left|right|any] [--exhaustive] [--json]",
+        "[DB.kdb] --character NAME (--target X,Y,Z | --targets FILE.csv) --command SEMANTICS [--side left|right|any] [--kind KIND] [--height H] [--exhaustive] [--json]",
         "Retrieves the strike clip and start pose that suit a character standing at the origin, facing +Z, in\n"
         "the database's guard pose, and a target in world metres (Y up). A k-d tree of pose keys and hit points\n"
         "is searched best bound first with exact bounds; --exhaustive scores every start of every clip instead (the\n"
@@ -27,6 +27,8 @@ const CommandSpec& query_spec() {
          {"targets", "FILE.csv", "one x,y,z per line ('#' comments); prints a list of results"},
          {"command", "SEMANTICS", "punch, kick, or any strike semantics the database holds"},
          {"side", "left|right|any", "which side strikes (default any)"},
+         kind_flag(),
+         height_flag(),
          {"exhaustive", "", "use the exhaustive reference search"},
          {"scaling", "leg|limb", "bring actors' hit paths to the character by leg length (default) or by the striking limb"},
          characters_dir_flag(), json_flag()}};
@@ -58,6 +60,8 @@ nlohmann::json result_json(const Retriever& retriever, const RetrievalResult& re
             {"clip_index", result.clip},
             {"semantics", db.string(clip.semantics)},
             {"side", side_name(static_cast<Side>(clip.side))},
+            {"kind", strike_kind_name(clip.strike_kind())},
+            {"height", strike_height_name(clip.strike_height())},
             {"segment", body_part_name(static_cast<BodyPart>(clip.segment))},
             {"start_frame", result.start_frame},
             {"contact_frame", result.contact_frame},
@@ -111,8 +115,8 @@ int run_query(int argc, char** argv) {
         const RetrievalResult result = exhaustive ? retriever.query_exhaustive(query) : retriever.query(query, workspace);
         const double latency_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started).count();
         if (!result.found) {
-            return input_error(setup.database_path + ": no " + *arguments.value("command") + " with side " +
-                               side_name(query.side) + " has a start far enough before its hit");
+            return input_error(setup.database_path + ": no " + strike_order_description(*arguments.value("command"), query.side, query.kind, query.height) +
+                               " has a start far enough before its hit");
         }
         results.push_back(result_json(retriever, result, latency_us));
     }
@@ -125,9 +129,10 @@ int run_query(int argc, char** argv) {
     }
     for (std::size_t i = 0; i < results.size(); ++i) {
         const nlohmann::json& r = results[i];
-        std::printf("target %.2f,%.2f,%.2f: %s (%s %s, %s) start %d contact %d in %.2f s; d_pose %.3f d_target %.3f m score %.3f; %.1f us\n",
+        std::printf("target %.2f,%.2f,%.2f: %s (%s %s %s %s, %s) start %d contact %d in %.2f s; d_pose %.3f d_target %.3f m score %.3f; %.1f us\n",
                     targets[i].x(), targets[i].y(), targets[i].z(), r["clip"].get<std::string>().c_str(),
-                    r["semantics"].get<std::string>().c_str(), r["side"].get<std::string>().c_str(), r["segment"].get<std::string>().c_str(),
+                    r["semantics"].get<std::string>().c_str(), r["side"].get<std::string>().c_str(), r["kind"].get<std::string>().c_str(),
+                    r["height"].get<std::string>().c_str(), r["segment"].get<std::string>().c_str(),
                     r["start_frame"].get<int>(), r["contact_frame"].get<int>(), r["time_to_contact_s"].get<double>(),
                     r["d_pose"].get<double>(), r["d_target"].get<double>(), r["score"].get<double>(), r["latency_us"].get<double>());
     }

@@ -5,7 +5,10 @@
 #include "kumite/core/strike_detection.h"
 #include "kumite/formats/annotation_file.h"
 
+#include <cstdio>
 #include <iomanip>
+#include <map>
+#include <set>
 #include <iostream>
 
 namespace kumite::cli {
@@ -17,10 +20,14 @@ const CommandSpec& suggest_spec() {
         "Proposes the strikes in captures: punches (hand extension peaks in front of the chest after a fast\n"
         "move) and kicks (ankle raised in front of the hip), each with its hit frame and span. With --segment\n"
         "PART, reports the extension peaks of that body part instead (semantics 'reach'). --write-annotations\n"
-        "turns every suggestion into a clip (mirrored too), with paths relative to --mocap-root when under it.",
-        1, 100000,
+        "turns every suggestion into a clip (mirrored too), with paths relative to --mocap-root when under it.\n"
+        "Each strike also gets a proposed kind (straight/hook/uppercut, front/roundhouse/side) and height\n"
+        "(low/middle/high). --compare ANNOTATIONS.json proposes kind and height for every labelled strike of an\n"
+        "annotation file and prints how often they agree with its labels, with the confusion tables.",
+        0, 100000,
         {{"segment", "PART", "a body part (hand_l, foot_r, head, ...): report its extension peaks"},
          {"write-annotations", "OUT.json", "write every suggestion as a clip of an annotation file ready for bake"},
+         {"compare", "ANNOTATIONS.json", "propose kind and height for the file's strikes and compare them with its labels"},
          unit_flag(), strict_flag(), mocap_root_flag(), body_map_flag(), json_flag()}};
     return spec;
 }
@@ -36,18 +43,28 @@ nlohmann::json strikes_json(const std::vector<StrikeSuggestion>& strikes) {
                         {"hit_frame", strike.hit_frame},
                         {"first", strike.first_frame},
                         {"last", strike.last_frame},
-                        {"confidence", strike.confidence}});
+                        {"confidence", strike.confidence},
+                        {"kind", strike_kind_name(strike.labels.kind)},
+                        {"height", strike_height_name(strike.labels.height)},
+                        {"hit_height_m", strike.labels.hit_height_m},
+                        {"approach_m", {{"along", strike.labels.approach_along_m}, {"sideways", strike.labels.approach_sideways_m},
+                                        {"up", strike.labels.approach_up_m}}},
+                        {"hips_to_line_deg", strike.labels.hips_to_line_deg}});
     }
     return list;
 }
 
 } // namespace
 
+int run_compare(const std::string& annotations_path, const CaptureOptions& options, bool as_json); // below
+
 int run_suggest(int argc, char** argv) {
     Arguments arguments;
     if (std::optional<int> status = parse_command_line(suggest_spec(), argc, argv, arguments)) return *status;
     Result<CaptureOptions> options = capture_options_from(arguments);
     if (!options) return usage_error(suggest_spec(), options.error().message);
+    if (const std::optional<std::string> compare = arguments.value("compare")) return run_compare(*compare, *options, arguments.has("json"));
+    if (arguments.positionals.empty()) return usage_error(suggest_spec(), "give captures to look at, or --compare ANNOTATIONS.json");
     std::optional<BodyPart> segment;
     if (const std::optional<std::string> name = arguments.value("segment")) {
         segment = body_part_from_name(*name);
@@ -81,9 +98,100 @@ int run_suggest(int argc, char** argv) {
             std::cout << "  " << std::left << std::setw(6) << strike["semantics"].get<std::string>() << std::setw(8)
                       << strike["segment"].get<std::string>() << " hit " << std::setw(5) << strike["hit_frame"].get<int>()
                       << " frames " << strike["first"].get<int>() << "-" << strike["last"].get<int>() << "  confidence "
-                      << std::fixed << std::setprecision(2) << strike["confidence"].get<double>() << "\n";
+                      << std::fixed << std::setprecision(2) << strike["confidence"].get<double>() << "  "
+                      << strike["kind"].get<std::string>() << " " << strike["height"].get<std::string>() << "\n";
         }
     }
+    return k_exit_ok;
+}
+
+namespace {
+
+// Agreement of proposed and annotated labels, with a confusion table per label (annotated -> proposed -> count).
+struct LabelTally {
+    int compared = 0;
+    int agreed = 0;
+    std::map<std::string, std::map<std::string, int>> confusion;
+    void add(const std::string& annotated, const std::string& proposed) {
+        ++compared;
+        agreed += annotated == proposed;
+        ++confusion[annotated][proposed];
+    }
+    nlohmann::json to_json() const {
+        return {{"compared", compared}, {"agreed", agreed}, {"agreement", compared ? double(agreed) / compared : 0.0}, {"confusion", confusion}};
+    }
+};
+
+void print_tally(const char* what, const LabelTally& tally) {
+    std::printf("%s: %d of %d agree (%.0f%%)\n", what, tally.agreed, tally.compared, tally.compared ? 100.0 * tally.agreed / tally.compared : 0.0);
+    std::set<std::string> proposed_names;
+    for (const auto& [annotated, row] : tally.confusion) {
+        for (const auto& [proposed, count] : row) proposed_names.insert(proposed);
+    }
+    std::printf("  %-14s", "labelled \\ proposed");
+    for (const std::string& name : proposed_names) std::printf(" %10s", name.c_str());
+    std::printf("\n");
+    for (const auto& [annotated, row] : tally.confusion) {
+        std::printf("  %-22s", annotated.c_str());
+        for (const std::string& name : proposed_names) std::printf(" %10d", row.count(name) ? row.at(name) : 0);
+        std::printf("\n");
+    }
+}
+
+} // namespace
+
+int run_compare(const std::string& annotations_path, const CaptureOptions& options, bool as_json) {
+    Result<RawAnnotations> annotations = annotations_read_file(annotations_path);
+    if (!annotations) return input_error(annotations.error().message);
+    struct Loaded {
+        BvhFile file;
+        RestAnatomy anatomy;
+    };
+    std::map<std::string, Loaded> captures;
+    LabelTally kinds, heights;
+    nlohmann::json clips = nlohmann::json::array();
+    for (const RawAnnotatedClip& clip : annotations->clips) {
+        if (!clip.is_strike() || !clip.segment || !clip.hit_frame) continue;
+        auto found = captures.find(clip.source);
+        if (found == captures.end()) {
+            Result<BvhFile> file = load_capture(clip.source, options);
+            if (!file) return input_error(annotations_path + ": clip " + clip.name + ": " + file.error().message);
+            Result<RestAnatomy> anatomy = rest_anatomy_build(file->clip, file->body_map);
+            if (!anatomy) return input_error(clip.source + ": " + anatomy.error().message);
+            found = captures.emplace(clip.source, Loaded{std::move(*file), std::move(*anatomy)}).first;
+        }
+        const Loaded& capture = found->second;
+        if (Result<void> fits = raw_clip_validate_frames(clip, capture.file.clip.frame_count()); !fits) return input_error(fits.error().message);
+        const StrikeLabels proposed =
+            strike_labels_propose(capture.file.clip, capture.anatomy, clip.semantics, *clip.segment, clip.first_frame, *clip.hit_frame);
+        if (clip.kind != StrikeKind::none) kinds.add(clip.semantics + " " + strike_kind_name(clip.kind), clip.semantics + " " + strike_kind_name(proposed.kind));
+        if (clip.height != StrikeHeight::none) heights.add(strike_height_name(clip.height), strike_height_name(proposed.height));
+        clips.push_back({{"name", clip.name},
+                         {"semantics", clip.semantics},
+                         {"kind", strike_kind_name(clip.kind)},
+                         {"height", strike_height_name(clip.height)},
+                         {"proposed_kind", strike_kind_name(proposed.kind)},
+                         {"proposed_height", strike_height_name(proposed.height)},
+                         {"hit_height_m", proposed.hit_height_m},
+                         {"hip_height_m", proposed.hip_height_m},
+                         {"shoulder_height_m", proposed.shoulder_height_m},
+                         {"approach_m", {{"along", proposed.approach_along_m}, {"sideways", proposed.approach_sideways_m}, {"up", proposed.approach_up_m}}},
+                         {"hips_to_line_deg", proposed.hips_to_line_deg}});
+    }
+    if (as_json) {
+        print_json({{"clips", clips}, {"kind", kinds.to_json()}, {"height", heights.to_json()}});
+        return k_exit_ok;
+    }
+    for (const auto& clip : clips) {
+        const bool differs = clip["kind"] != clip["proposed_kind"] || clip["height"] != clip["proposed_height"];
+        std::printf("%c %-48s %-6s labelled %-10s %-6s proposed %-10s %-6s (hit %.2f m; hip %.2f, shoulder %.2f)\n", differs ? '*' : ' ',
+                    clip["name"].get<std::string>().c_str(), clip["semantics"].get<std::string>().c_str(), clip["kind"].get<std::string>().c_str(),
+                    clip["height"].get<std::string>().c_str(), clip["proposed_kind"].get<std::string>().c_str(),
+                    clip["proposed_height"].get<std::string>().c_str(), clip["hit_height_m"].get<double>(), clip["hip_height_m"].get<double>(),
+                    clip["shoulder_height_m"].get<double>());
+    }
+    print_tally("kind", kinds);
+    print_tally("height", heights);
     return k_exit_ok;
 }
 

@@ -22,6 +22,17 @@ Result<Eigen::Vector3d> parse_point(const std::string& text, const std::string& 
 
 const char* side_name(Side side) { return side == Side::left ? "left" : side == Side::right ? "right" : "none"; }
 
+FlagSpec kind_flag() { return {"kind", "KIND", "which kind: straight, hook, uppercut (punches), front, roundhouse, side (kicks), other, any (default)"}; }
+FlagSpec height_flag() { return {"height", "low|middle|high|any", "where the strike lands on its actor (default any)"}; }
+
+std::string strike_order_description(std::string_view semantics, Side side, StrikeKind kind, StrikeHeight height) {
+    std::string text(semantics);
+    if (side != Side::none) text += std::string(" ") + side_name(side);
+    if (kind != StrikeKind::none) text += std::string(" ") + strike_kind_name(kind);
+    if (height != StrikeHeight::none) text += std::string(" ") + strike_height_name(height);
+    return text;
+}
+
 std::optional<int> fighter_setup(FighterSetup& setup, const CommandSpec& spec, const Arguments& arguments) {
     const std::optional<std::string> character_name = arguments.value("character");
     const std::optional<std::string> command = arguments.value("command");
@@ -31,6 +42,21 @@ std::optional<int> fighter_setup(FighterSetup& setup, const CommandSpec& spec, c
     if (const std::optional<std::string> name = arguments.value("side"); name && *name != "any") {
         if (*name != "left" && *name != "right") return usage_error(spec, "--side must be left, right or any, not '" + *name + "'");
         side = *name == "left" ? Side::left : Side::right;
+    }
+    StrikeKind kind = StrikeKind::none;
+    if (const std::optional<std::string> name = arguments.value("kind"); name && *name != "any") {
+        const std::optional<StrikeKind> parsed = strike_kind_from_name(*name);
+        if (!parsed || *parsed == StrikeKind::none || !strike_kind_fits(*command, *parsed)) {
+            return usage_error(spec, "--kind '" + *name + "' is not a kind of " + *command +
+                                         (*command == "punch" ? " (straight, hook, uppercut, other, any)" : *command == "kick" ? " (front, roundhouse, side, other, any)" : " (other, any)"));
+        }
+        kind = *parsed;
+    }
+    StrikeHeight height = StrikeHeight::none;
+    if (const std::optional<std::string> name = arguments.value("height"); name && *name != "any") {
+        const std::optional<StrikeHeight> parsed = strike_height_from_name(*name);
+        if (!parsed || *parsed == StrikeHeight::none) return usage_error(spec, "--height must be low, middle, high or any, not '" + *name + "'");
+        height = *parsed;
     }
     RetrievalSettings settings;
     if (const std::optional<std::string> scaling = arguments.value("scaling")) {
@@ -63,6 +89,10 @@ std::optional<int> fighter_setup(FighterSetup& setup, const CommandSpec& spec, c
         }
         return input_error(setup.database_path + ": no '" + *command + "' strikes in this database (it has: " + known + ")");
     }
+    if (setup.retriever->candidate_count(semantics, side, kind, height) == 0) {
+        return input_error(setup.database_path + ": " + strike_order_description(*command, side, kind, height) +
+                           ": the database holds no such strike (kumite db-info lists what it has)");
+    }
     setup.rig = std::make_unique<CharacterRig>(setup.character.clip.skeleton, setup.anatomy);
     setup.rig->stand_at_origin(setup.standing, db);
     setup.rig->still_feature(setup.feature);
@@ -70,6 +100,8 @@ std::optional<int> fighter_setup(FighterSetup& setup, const CommandSpec& spec, c
     setup.query.heading = setup.rig->heading();
     setup.query.semantics = semantics;
     setup.query.side = side;
+    setup.query.kind = kind;
+    setup.query.height = height;
     setup.query.character = setup.rig->size();
     return std::nullopt;
 }

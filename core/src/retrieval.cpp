@@ -11,7 +11,6 @@
 namespace kumite {
 namespace {
 
-constexpr double k_infinity = std::numeric_limits<double>::infinity();
 constexpr Side k_sides[] = {Side::none, Side::left, Side::right};
 // Slack for float rounding in the bounds (distances are computed from float features): a bound never exceeds the
 // exact value by more than this, in leg lengths.
@@ -39,7 +38,7 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
         const std::string_view name = m_db.string(clip.semantics);
         if (std::find(m_semantics_names.begin(), m_semantics_names.end(), name) == m_semantics_names.end()) m_semantics_names.push_back(name);
     }
-    m_order_keys = static_cast<int>(m_semantics_names.size()) * 3 * 2;
+    m_order_keys = static_cast<int>(m_semantics_names.size()) * k_keys_per_semantics;
 
     m_clips.resize(m_db.clips.size());
     for (std::size_t c = 0; c < m_db.clips.size(); ++c) {
@@ -47,6 +46,8 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
         ClipInfo& info = m_clips[c];
         info.semantics = semantics_id(m_db.string(clip.semantics));
         info.side = static_cast<Side>(std::min<std::uint32_t>(clip.side, 2));
+        info.kind = static_cast<StrikeKind>(clip.kind % k_strike_kind_count);
+        info.height = static_cast<StrikeHeight>(clip.height % k_strike_height_count);
         info.arm_strike = is_arm_part(clip.segment);
         info.first_start = info.end_start = static_cast<int>(clip.first_pose);
         if (db_clip_is_strike(clip)) info.end_start += std::max(0, clip.hit_frame - m_settings.min_lead_frames + 1);
@@ -78,36 +79,38 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
         }
         m_cluster_radius[c] = static_cast<float>(radius);
     }
-    // Groups: one per order key, or one per cluster and order key (trees_per_cluster).
+    // Groups: one per order key, or one per cluster and order key (trees_per_cluster). Candidates are made in
+    // cluster order, then sorted by group (stable, so members keep their order inside a group).
     m_group_clusters = m_settings.trees_per_cluster ? std::max(1, clusters) : 1;
-    m_group_begin.assign(std::size_t(m_group_clusters) * m_order_keys + 1, 0);
-    for (int group_cluster = 0; group_cluster < m_group_clusters; ++group_cluster) {
-        for (int key = 0; key < m_order_keys; ++key) {
-            m_group_begin[std::size_t(group_cluster) * m_order_keys + key] = static_cast<std::uint32_t>(m_candidates.size());
-            for (int c = 0; c < clusters; ++c) {
-                if (m_settings.trees_per_cluster && c != group_cluster) continue;
-                const DbCluster& cluster = m_db.clusters[c];
-                for (std::uint32_t m = 0; m < cluster.member_count; ++m) {
-                    const std::uint32_t pose = m_db.members[cluster.first_member + m];
-                    const ClipInfo& clip = m_clips[m_db.poses[pose].clip];
-                    if (int(pose) < clip.first_start || int(pose) >= clip.end_start || order_key(clip.semantics, clip.side, clip.arm_strike) != key) {
-                        continue;
-                    }
-                    const DbPose& start = m_db.poses[pose];
-                    const DbPose& hit = m_db.poses[m_db.clips[start.clip].first_pose + m_db.clips[start.clip].hit_frame];
-                    const Eigen::Vector3d hit_in_start =
-                        to_start_heading(start, m_poses[pose].heading_cos, m_poses[pose].heading_sin, hit.hit_point) / clip.actor_scale_length;
-                    Candidate candidate{};
-                    for (int axis = 0; axis < 3; ++axis) candidate.hit_in_start[axis] = static_cast<float>(hit_in_start[axis]);
-                    candidate.distance_to_centroid = m_poses[pose].distance_to_centroid;
-                    candidate.pose = pose;
-                    candidate.support_foot = clip.support_foot;
-                    candidate.start_flags = start.flags;
-                    m_candidates.push_back(candidate);
-                }
-            }
+    const std::size_t group_count = std::size_t(m_group_clusters) * m_order_keys;
+    std::vector<std::pair<std::uint32_t, Candidate>> grouped;
+    for (int c = 0; c < clusters; ++c) {
+        const DbCluster& cluster = m_db.clusters[c];
+        const int group_cluster = m_settings.trees_per_cluster ? c : 0;
+        for (std::uint32_t m = 0; m < cluster.member_count; ++m) {
+            const std::uint32_t pose = m_db.members[cluster.first_member + m];
+            const ClipInfo& clip = m_clips[m_db.poses[pose].clip];
+            if (int(pose) < clip.first_start || int(pose) >= clip.end_start) continue;
+            const int key = order_key(clip.semantics, clip.side, clip.arm_strike, clip.kind, clip.height);
+            const DbPose& start = m_db.poses[pose];
+            const DbPose& hit = m_db.poses[m_db.clips[start.clip].first_pose + m_db.clips[start.clip].hit_frame];
+            const Eigen::Vector3d hit_in_start =
+                to_start_heading(start, m_poses[pose].heading_cos, m_poses[pose].heading_sin, hit.hit_point) / clip.actor_scale_length;
+            Candidate candidate{};
+            for (int axis = 0; axis < 3; ++axis) candidate.hit_in_start[axis] = static_cast<float>(hit_in_start[axis]);
+            candidate.distance_to_centroid = m_poses[pose].distance_to_centroid;
+            candidate.pose = pose;
+            candidate.support_foot = clip.support_foot;
+            candidate.start_flags = start.flags;
+            grouped.emplace_back(static_cast<std::uint32_t>(std::size_t(group_cluster) * m_order_keys + key), candidate);
         }
     }
+    std::stable_sort(grouped.begin(), grouped.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    m_group_begin.assign(group_count + 1, 0);
+    for (const auto& [group, candidate] : grouped) ++m_group_begin[group + 1];
+    for (std::size_t group = 0; group < group_count; ++group) m_group_begin[group + 1] += m_group_begin[group];
+    m_candidates.reserve(grouped.size());
+    for (const auto& [group, candidate] : grouped) m_candidates.push_back(candidate);
     m_group_begin.back() = static_cast<std::uint32_t>(m_candidates.size());
     build_trees();
     m_order_counts.assign(m_order_keys, 0);
@@ -144,12 +147,25 @@ void Retriever::build_trees() {
     m_candidates = std::move(in_tree_order);
 }
 
-int Retriever::candidate_count(int semantics, Side side) const {
-    int count = 0;
+template <class Visit>
+void Retriever::for_each_order_key(int semantics, Side side, StrikeKind kind, StrikeHeight height, Visit visit) {
     for (Side each : k_sides) {
         if (side != Side::none && each != side) continue;
-        for (bool arm : {false, true}) count += m_order_counts[order_key(semantics, each, arm)];
+        for (bool arm : {false, true}) {
+            for (int k = 0; k < k_strike_kind_count; ++k) {
+                if (!label_matches(static_cast<int>(kind), k)) continue;
+                for (int h = 0; h < k_strike_height_count; ++h) {
+                    if (label_matches(static_cast<int>(height), h)) visit(order_key(semantics, each, arm, static_cast<StrikeKind>(k), static_cast<StrikeHeight>(h)));
+                }
+            }
+        }
     }
+}
+
+int Retriever::candidate_count(int semantics, Side side, StrikeKind kind, StrikeHeight height) const {
+    if (semantics < 0 || semantics >= static_cast<int>(m_semantics_names.size())) return 0;
+    int count = 0;
+    for_each_order_key(semantics, side, kind, height, [&](int key) { count += m_order_counts[key]; });
     return count;
 }
 
@@ -173,13 +189,20 @@ FloorAlignment clip_alignment(const MotionDatabaseView& db, int clip, int frame,
 
 RetrievalWorkspace Retriever::make_workspace() const {
     RetrievalWorkspace workspace;
-    workspace.group_order.resize(std::size_t(m_group_clusters) * 3 * 2); // every side and limb of one semantics
+    workspace.group_order.resize(std::size_t(m_group_clusters) * k_keys_per_semantics); // every key of one semantics
     workspace.centroid_distance.resize(m_db.clusters.size());
     return workspace;
 }
 
 bool Retriever::obeys(const ClipInfo& clip, const RetrievalQuery& query) const {
-    return clip.semantics == query.semantics && (query.side == Side::none || clip.side == query.side);
+    return clip.semantics == query.semantics && (query.side == Side::none || clip.side == query.side) &&
+           label_matches(static_cast<int>(query.kind), static_cast<int>(clip.kind)) &&
+           label_matches(static_cast<int>(query.height), static_cast<int>(clip.height));
+}
+
+bool Retriever::excluded(std::uint32_t pose, const RetrievalQuery& query) const {
+    const int clip = static_cast<int>(m_db.poses[pose].clip);
+    return std::find(query.excluded_clips.begin(), query.excluded_clips.end(), clip) != query.excluded_clips.end();
 }
 
 double Retriever::character_scale_length(bool arm, const CharacterSize& character) const {
@@ -236,7 +259,7 @@ Retriever::GroupQuery Retriever::group_query(int group, double centroid_distance
                                              const Eigen::Vector3d& target_in_heading) const {
     // In the group's units (scale lengths) the target is one point for every actor, and a hit-point distance times
     // to_score is the target part of a candidate's score.
-    const bool arm = group % 2 == 1;
+    const bool arm = key_is_arm(group % m_order_keys);
     const double length = character_scale_length(arm, query.character);
     GroupQuery group_query;
     group_query.group = group;
@@ -274,6 +297,7 @@ void Retriever::visit_leaf(const BoxTree::Node& leaf, const GroupQuery& group, c
     for (std::uint32_t k = leaf.begin; k < leaf.end; ++k) {
         const Candidate& candidate = m_candidates[k];
         if (candidate.support_foot && !support_planted(candidate.support_foot, candidate.start_flags, query)) continue;
+        if (!query.excluded_clips.empty() && excluded(candidate.pose, query)) continue;
         ++best.counts.candidates_seen;
         float key_squared = 0.0f;
         for (int d = 0; d < k_pose_key_dimensions; ++d) {
@@ -328,28 +352,26 @@ void Retriever::visit_group(const GroupQuery& group, double root_bound, const Re
 RetrievalResult Retriever::query(const RetrievalQuery& query, RetrievalWorkspace& workspace) const {
     assert(query.pose_feature.size() == std::size_t(k_feature_dimensions));
     RetrievalResult best;
-    best.score = k_infinity;
+    best.score = query.score_limit;
     if (query.semantics < 0 || query.semantics >= static_cast<int>(m_semantics_names.size())) return best;
     const Eigen::Vector3d target_in_heading = query.heading.to_heading(query.target_world);
     std::array<float, k_pose_key_dimensions> query_key;
     m_key_projection.project(query.pose_feature, query_key);
     // The cluster bound needs the query's distance to every centroid: worth it only with trees per cluster, and
     // then not for small orders (measured with tests/bench/retrieval_bench.cpp).
-    const bool cluster_bounds = m_settings.trees_per_cluster && candidate_count(query.semantics, query.side) > m_settings.scan_below;
+    const bool cluster_bounds =
+        m_settings.trees_per_cluster && candidate_count(query.semantics, query.side, query.kind, query.height) > m_settings.scan_below;
     // The groups of the order with their roots' bounds, visited best bound first.
     std::size_t groups = 0;
     for (int c = 0; c < m_group_clusters; ++c) {
         double centroid_distance = -1.0;
         if (cluster_bounds) centroid_distance = workspace.centroid_distance[c] = rms_distance(m_db.centroid(c), query.pose_feature);
-        for (Side side : k_sides) {
-            if (query.side != Side::none && side != query.side) continue;
-            for (bool arm : {false, true}) {
-                const int group = c * m_order_keys + order_key(query.semantics, side, arm);
-                if (m_group_root[group] < 0) continue;
-                const GroupQuery prepared = group_query(group, centroid_distance, query_key, query, target_in_heading);
-                workspace.group_order[groups++] = {node_bound(m_group_root[group], prepared), group};
-            }
-        }
+        for_each_order_key(query.semantics, query.side, query.kind, query.height, [&](int key) {
+            const int group = c * m_order_keys + key;
+            if (m_group_root[group] < 0) return;
+            const GroupQuery prepared = group_query(group, centroid_distance, query_key, query, target_in_heading);
+            workspace.group_order[groups++] = {node_bound(m_group_root[group], prepared), group};
+        });
     }
     std::sort(workspace.group_order.begin(), workspace.group_order.begin() + groups);
     int last_cluster = -1;
@@ -368,11 +390,12 @@ RetrievalResult Retriever::query(const RetrievalQuery& query, RetrievalWorkspace
 
 RetrievalResult Retriever::query_exhaustive(const RetrievalQuery& query) const {
     RetrievalResult best;
-    best.score = k_infinity;
+    best.score = query.score_limit;
     for (const ClipInfo& clip : m_clips) {
         if (!obeys(clip, query)) continue;
         for (int pose = clip.first_start; pose < clip.end_start; ++pose) {
             if (clip.support_foot && !support_planted(clip.support_foot, m_db.poses[pose].flags, query)) continue;
+            if (!query.excluded_clips.empty() && excluded(static_cast<std::uint32_t>(pose), query)) continue;
             ++best.counts.candidates_seen;
             ++best.counts.pose_scored;
             ++best.counts.target_scored;

@@ -89,7 +89,7 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
                 // hips' heading) is flung back for balance: neither is punching.
                 Eigen::Vector3d heading = pelvis_forward;
                 heading.y() = 0.0;
-                if (offset.y() < -0.3 * chain.length() || offset.dot(heading.normalized()) < 0.0) {
+                if (offset.y() < -0.5 * chain.length() || offset.dot(heading.normalized()) < 0.0) {
                     reach[frame][limb] = 0.0;
                 }
             } else {
@@ -170,6 +170,9 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
         if (!during_kick) kept.push_back(strike);
     }
     std::sort(kept.begin(), kept.end(), [](const StrikeSuggestion& a, const StrikeSuggestion& b) { return a.hit_frame < b.hit_frame; });
+    for (StrikeSuggestion& strike : kept) {
+        strike.labels = strike_labels_propose(clip, anatomy, strike_semantics_name(strike.semantics), strike.segment, strike.first_frame, strike.hit_frame);
+    }
     return kept;
 }
 

@@ -14,7 +14,7 @@ namespace {
 using nlohmann::json;
 
 const std::set<std::string> k_non_strikes = {"rest", "step_forward", "step_back", "step_left", "step_right"};
-const std::set<std::string> k_clip_keys = {"name", "source", "first", "last", "semantics", "segment", "side", "hit_frame", "mirror"};
+const std::set<std::string> k_clip_keys = {"name", "source", "first", "last", "semantics", "segment", "side", "hit_frame", "mirror", "kind", "height"};
 
 std::string side_name(Side side) { return side == Side::left ? "left" : side == Side::right ? "right" : "none"; }
 
@@ -68,6 +68,20 @@ Result<RawAnnotatedClip> clip_from_json(const json& item, size_t index, std::str
         if (!item["mirror"].is_boolean()) return clip_error(source, index, clip.name, "\"mirror\" must be true or false");
         clip.mirror = item["mirror"].get<bool>();
     }
+    if (item.contains("kind") && !item["kind"].is_null()) {
+        std::string name;
+        if (auto error = string_field("kind", name, true)) return *error;
+        const std::optional<StrikeKind> kind = strike_kind_from_name(name);
+        if (!kind) return clip_error(source, index, clip.name, "unknown \"kind\" \"" + name + "\" (straight, hook, uppercut, front, roundhouse, side, other, none)");
+        clip.kind = *kind;
+    }
+    if (item.contains("height") && !item["height"].is_null()) {
+        std::string name;
+        if (auto error = string_field("height", name, true)) return *error;
+        const std::optional<StrikeHeight> height = strike_height_from_name(name);
+        if (!height) return clip_error(source, index, clip.name, "unknown \"height\" \"" + name + "\" (low, middle, high, none)");
+        clip.height = *height;
+    }
     json extra = json::object();
     for (const auto& [key, value] : item.items()) {
         if (!k_clip_keys.count(key)) extra[key] = value;
@@ -95,6 +109,12 @@ Result<void> RawAnnotations::validate(std::string_view source_name) const {
         if (clip.is_strike()) {
             if (!clip.segment) return fail("a " + clip.semantics + " needs a \"segment\" (the hit body part)");
             if (!clip.hit_frame) return fail("a " + clip.semantics + " needs a \"hit_frame\"");
+        }
+        if (!clip.is_strike() && (clip.kind != StrikeKind::none || clip.height != StrikeHeight::none)) {
+            return fail("a " + clip.semantics + " is not a strike: it has no \"kind\" or \"height\"");
+        }
+        if (!strike_kind_fits(clip.semantics, clip.kind)) {
+            return fail(std::string("a ") + clip.semantics + " cannot be of kind \"" + strike_kind_name(clip.kind) + "\"");
         }
         if (clip.hit_frame && (*clip.hit_frame < clip.first_frame || *clip.hit_frame > clip.last_frame)) {
             return fail("\"hit_frame\" " + std::to_string(*clip.hit_frame) + " is outside the trim range " +
@@ -171,6 +191,8 @@ std::string annotations_write_string(const RawAnnotations& annotations) {
         item["side"] = side_name(clip.side);
         if (clip.hit_frame) item["hit_frame"] = *clip.hit_frame;
         item["mirror"] = clip.mirror;
+        if (clip.kind != StrikeKind::none) item["kind"] = strike_kind_name(clip.kind);
+        if (clip.height != StrikeHeight::none) item["height"] = strike_height_name(clip.height);
         clips.push_back(std::move(item));
     }
     document["clips"] = std::move(clips);
@@ -204,6 +226,8 @@ RawAnnotatedClip clip_from_suggestion(const StrikeSuggestion& strike, const std:
     clip.side = strike.side;
     clip.hit_frame = strike.hit_frame;
     clip.mirror = true;
+    clip.kind = strike.labels.kind;
+    clip.height = strike.labels.height;
     return clip;
 }
 

@@ -7,7 +7,7 @@
 namespace kumite {
 namespace {
 
-static_assert(sizeof(DbMeta) == 32 && sizeof(DbActor) == 24 && sizeof(DbClip) == 80 && sizeof(DbPose) == 60 &&
+static_assert(sizeof(DbMeta) == 32 && sizeof(DbActor) == 24 && sizeof(DbClip) == 84 && sizeof(DbPose) == 60 &&
                   sizeof(DbCluster) == 16 && sizeof(DbMirFrame) == 4 * (4 + 4 * k_body_part_count + 10 * k_max_chain_joints + 2 + 4 * k_limb_count),
               "records have no padding: their bytes are the file's bytes");
 static_assert(std::is_trivially_copyable_v<DbMirFrame> && std::is_trivially_copyable_v<DbClip>);
@@ -95,6 +95,9 @@ Result<void> check_content(const MotionDatabaseView& db, const Checker& check) {
         }
         if (db_clip_is_strike(clip) && (clip.hit_frame < 0 || clip.segment < 0)) return fail("a strike without hit frame or segment");
         if (!finite(clip.box_min) || !finite(clip.box_max)) return fail("its box is not finite");
+        if (clip.kind >= k_strike_kind_count) return fail("kind " + std::to_string(clip.kind) + " is not a strike kind");
+        if (clip.height >= k_strike_height_count) return fail("height " + std::to_string(clip.height) + " is not low, middle or high");
+        if (clip.reserved != 0) return fail("its reserved bytes are not 0");
     }
     if (next_pose != db.poses.size()) return check.fail_at<DbClip>(k_section_clips, db.clips.size() - (db.clips.empty() ? 0 : 1),
                                                                     "clips cover " + std::to_string(next_pose) + " of " +

@@ -20,7 +20,7 @@ struct Scene {
     std::unique_ptr<kumite::test::StandingCharacter> character;
 
     explicit Scene(const std::string& name) {
-        Result<MotionDatabase> opened = MotionDatabase::open(kumite::test::source_dir() / "data/golden/golden-v1.kdb");
+        Result<MotionDatabase> opened = MotionDatabase::open(kumite::test::source_dir() / "data/golden/golden-v2.kdb");
         REQUIRE(opened.has_value());
         database = std::move(*opened);
         retriever = std::make_unique<Retriever>(database.view());

@@ -17,7 +17,7 @@ using namespace kumite;
 namespace {
 
 MotionDatabase golden() {
-    Result<MotionDatabase> opened = MotionDatabase::open(kumite::test::source_dir() / "data/golden/golden-v1.kdb");
+    Result<MotionDatabase> opened = MotionDatabase::open(kumite::test::source_dir() / "data/golden/golden-v2.kdb");
     REQUIRE(opened.has_value());
     return std::move(*opened);
 }

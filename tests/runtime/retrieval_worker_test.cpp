@@ -25,7 +25,7 @@ struct Fixture {
     CharacterSize size;
 
     Fixture() {
-        Result<MotionDatabase> opened = MotionDatabase::open(kumite::test::source_dir() / "data/golden/golden-v1.kdb");
+        Result<MotionDatabase> opened = MotionDatabase::open(kumite::test::source_dir() / "data/golden/golden-v2.kdb");
         REQUIRE(opened.has_value());
         database = std::move(*opened);
         Result<BvhFile> file = bvh_read_file(kumite::test::source_dir() / "data/characters/scout.bvh");

@@ -11,6 +11,7 @@
 
 #include "kumite/core/body_map.h"
 #include "kumite/core/mir.h"
+#include "kumite/core/strike_labels.h"
 
 #include <cstdint>
 #include <span>
@@ -77,6 +78,12 @@ struct DbClip {
     std::uint32_t source_first_frame = 0; // capture frame of clip frame 0
     float box_min[3] = {0, 0, 0};       // the hit trajectory's box over every start, start's heading frame, metres
     float box_max[3] = {0, 0, 0};
+    std::uint8_t kind = 0;              // StrikeKind (strike_labels.h), 0: unlabelled
+    std::uint8_t height = 0;            // StrikeHeight, 0: unlabelled
+    std::uint16_t reserved = 0;
+
+    StrikeKind strike_kind() const { return static_cast<StrikeKind>(kind); }
+    StrikeHeight strike_height() const { return static_cast<StrikeHeight>(height); }
 };
 
 enum DbPoseFlags : std::uint32_t {

@@ -31,8 +31,10 @@
 #include "kumite/core/motion_database.h"
 #include "kumite/core/pose_distance.h"
 #include "kumite/core/pose_embedding.h"
+#include "kumite/core/strike_labels.h"
 
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -73,6 +75,12 @@ struct RetrievalQuery {
     Eigen::Vector3d target_world = Eigen::Vector3d::Zero();
     int semantics = -1;                  // Retriever::semantics_id
     Side side = Side::none;              // none: either side
+    StrikeKind kind = StrikeKind::none;      // none: any kind (labelled or not)
+    StrikeHeight height = StrikeHeight::none; // none: any height
+    // Variety: clips not to return (e.g. the last few strikes), and a score the answer must beat (infinity: none).
+    // A second query with these finds the best other clip within a margin of the first answer.
+    std::span<const int> excluded_clips;
+    double score_limit = std::numeric_limits<double>::infinity();
     CharacterSize character;
     // The current motion's planted feet (DbPoseFlags). Support-foot rule: a leg strike is a candidate only when
     // its support foot (the other one) is planted both now and in the clip's start pose, so a kick never starts
@@ -123,6 +131,9 @@ public:
 
     // The id of a semantics the database holds ("punch"), or -1.
     int semantics_id(std::string_view semantics) const;
+    // How many candidate starts the database holds for an order (none: any side, kind or height); 0 means the
+    // order cannot be served.
+    int candidate_count(int semantics, Side side, StrikeKind kind = StrikeKind::none, StrikeHeight height = StrikeHeight::none) const;
     std::string_view semantics_name(int id) const { return m_semantics_names[id]; }
 
     RetrievalWorkspace make_workspace() const;
@@ -138,6 +149,8 @@ private:
     struct ClipInfo {
         int semantics = -1;
         Side side = Side::none;
+        StrikeKind kind = StrikeKind::none;
+        StrikeHeight height = StrikeHeight::none;
         bool arm_strike = false;
         int first_start = 0; // pose indices of its candidate starts: [first_start, end_start)
         int end_start = 0;
@@ -149,10 +162,20 @@ private:
         float distance_to_centroid = 0.0f; // sqrt(Kovar / points), leg lengths
         float heading_cos = 1.0f, heading_sin = 0.0f;
     };
-    // A group is the candidate starts of one order key (semantics, side, arm or leg strike), or of one cluster for
-    // one order key: m_candidates[m_group_begin[g] .. m_group_begin[g + 1]), g = cluster * m_order_keys + key (cluster
-    // 0 when not per cluster), in its tree's order.
-    int order_key(int semantics, Side side, bool arm) const { return (semantics * 3 + static_cast<int>(side)) * 2 + arm; }
+    // A group is the candidate starts of one order key (semantics, side, arm or leg strike, kind, height), or of one
+    // cluster for one order key: m_candidates[m_group_begin[g] .. m_group_begin[g + 1]), g = cluster * m_order_keys +
+    // key (cluster 0 when not per cluster), in its tree's order.
+    static constexpr int k_keys_per_semantics = 3 * 2 * k_strike_kind_count * k_strike_height_count;
+    static int order_key(int semantics, Side side, bool arm, StrikeKind kind, StrikeHeight height) {
+        return (((semantics * 3 + static_cast<int>(side)) * 2 + arm) * k_strike_kind_count + static_cast<int>(kind)) * k_strike_height_count +
+               static_cast<int>(height);
+    }
+    static bool key_is_arm(int key) { return (key / (k_strike_kind_count * k_strike_height_count)) % 2 == 1; }
+    static bool label_matches(int wanted, int label) { return wanted == 0 || wanted == label; } // 0: any
+    bool excluded(std::uint32_t pose, const RetrievalQuery& query) const;
+    // Calls visit(side, arm, kind, height) for every order key an order covers.
+    template <class Visit>
+    static void for_each_order_key(int semantics, Side side, StrikeKind kind, StrikeHeight height, Visit visit);
     double character_scale_length(bool arm, const CharacterSize& character) const;
 
     bool obeys(const ClipInfo& clip, const RetrievalQuery& query) const;
@@ -176,7 +199,6 @@ private:
     double node_bound(int node, const GroupQuery& group) const; // a lower bound of the score of every candidate below
     void visit_group(const GroupQuery& group, double root_bound, const RetrievalQuery& query, RetrievalResult& best) const;
     void visit_leaf(const BoxTree::Node& leaf, const GroupQuery& group, const RetrievalQuery& query, RetrievalResult& best) const;
-    int candidate_count(int semantics, Side side) const; // over every cluster and limb
     void finish(RetrievalResult& result, const RetrievalQuery& query) const;
 
     MotionDatabaseView m_db;

@@ -4,7 +4,8 @@
 // The rule, per limb, on the pose's own anatomy (so any size, unit or rest convention works):
 // - punch: the hand's extension |wrist - shoulder| / arm length peaks above 0.85 with the hand away from the chest
 //   (more than 0.6 arm length on the floor plane: fighters stand bladed, so not necessarily where the chest
-//   faces), no lower than 0.3 arm length below the shoulder and not behind it along the hips' heading, and not
+//   faces), no lower than 0.5 arm length below the shoulder (a low punch from a crouch reaches 0.4; an arm swung
+//   while walking hangs 0.8 below) and not behind it along the hips' heading, and not
 //   during a kick (arms fly out for balance then), after the hand moved at 1.5 arm lengths per second or more in the 0.3 s before; the hit frame is the
 //   extension peak (full extension, where the hand's speed falls to a minimum);
 // - kick: the ankle rises above 0.35 leg length over its standing height in front of the hip (forward reach above
@@ -12,10 +13,12 @@
 // - reach (any part asked for by name): peaks of the part's distance from the pelvis, relative to its rest
 //   distance, that stand 0.1 above the valleys on both sides.
 // Peaks closer than 0.3 s keep the stronger. A strike spans from the extension valley before the hit to the one
-// after (at most 1 s each way). Confidence grows with how far the peak clears its thresholds.
+// after (at most 1 s each way). Confidence grows with how far the peak clears its thresholds. Each strike's kind
+// and height are proposed by strike_labels_propose over its span up to the hit.
 
 #include "kumite/core/body_map.h"
 #include "kumite/core/rest_anatomy.h"
+#include "kumite/core/strike_labels.h"
 
 #include <optional>
 #include <vector>
@@ -32,6 +35,7 @@ struct StrikeSuggestion {
     int first_frame = 0;
     int last_frame = 0;
     double confidence = 0.0; // 0..1
+    StrikeLabels labels;     // proposed kind and height (strike_labels.h); none for reach peaks
 };
 
 // With `segment`, reports reach peaks of that part instead of punches and kicks.

@@ -6,6 +6,7 @@
 #include "kumite/core/body_map.h"
 #include "kumite/core/result.h"
 #include "kumite/core/strike_detection.h"
+#include "kumite/core/strike_labels.h"
 
 #include <filesystem>
 #include <optional>
@@ -15,7 +16,8 @@
 
 namespace kumite {
 
-inline constexpr int k_annotation_format_version = 1;
+// Version 2 added a strike's "kind" and "height" (strike_labels.h); version 1 files read as unlabelled.
+inline constexpr int k_annotation_format_version = 2;
 
 struct RawAnnotatedClip {
     std::string name;                 // unique within the file
@@ -27,6 +29,8 @@ struct RawAnnotatedClip {
     Side side = Side::none;
     std::optional<int> hit_frame;     // in capture frames, inside the trim range (strikes)
     bool mirror = false;              // also use the clip mirrored left <-> right
+    StrikeKind kind = StrikeKind::none;       // strikes: straight, hook, ... (none: unlabelled)
+    StrikeHeight height = StrikeHeight::none; // strikes: low, middle, high (none: unlabelled)
     std::string extra_json = "{}";    // keys this version does not know, kept as a JSON object
 
     bool is_strike() const; // not rest and not a step
@@ -38,7 +42,7 @@ struct RawAnnotations {
     std::string extra_json = "{}"; // unknown top-level keys
 
     // Content checks that need no capture: names unique, ranges ordered, strikes with segment and hit frame
-    // inside the range. The error names the source, the clip and the field.
+    // inside the range, a kind that belongs to the semantics (no hook kick), labels only on strikes. The error names the source, the clip and the field.
     Result<void> validate(std::string_view source_name = "annotations") const;
 };
 

@@ -18,7 +18,8 @@
 namespace kumite {
 
 inline constexpr char k_database_magic[8] = {'K', 'U', 'M', 'I', 'T', 'E', 'D', 'B'};
-inline constexpr std::uint32_t k_database_format_version = 1;
+// Version 2 added each clip's strike kind and height (CLIP records of 84 bytes).
+inline constexpr std::uint32_t k_database_format_version = 2;
 inline constexpr std::size_t k_database_alignment = 64;
 
 // A section's type: four characters, e.g. section_tag("CLIP").
