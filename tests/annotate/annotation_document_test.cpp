@@ -34,13 +34,6 @@ RawAnnotatedClip kick_clip(const std::string& name) {
     return clip;
 }
 
-std::string read_text(const std::filesystem::path& path) {
-    std::ifstream stream(path, std::ios::binary);
-    std::ostringstream text;
-    text << stream.rdbuf();
-    return text.str();
-}
-
 } // namespace
 
 TEST_CASE("annotation document: adding a clip is one undo step, undo and redo restore it exactly", "[annotate]") {
@@ -154,7 +147,7 @@ TEST_CASE("annotation document: save writes annotations_write_string's text atom
     CHECK_FALSE(document.is_dirty());
     CHECK(document.file_path() == path);
 
-    const std::string written = read_text(path.toStdString());
+    const std::string written = test::read_text(path.toStdString());
     CHECK(written == annotations_write_string(document.annotations()));
     Result<RawAnnotations> read = annotations_read_file(path.toStdString());
     REQUIRE(read);
@@ -178,7 +171,7 @@ TEST_CASE("annotation document: saving an invalid file is refused and leaves the
     AnnotationDocument document(test::mocap_root());
     document.add_clip(kick_clip("kick"));
     REQUIRE(document.save_as(path));
-    const std::string before = read_text(path.toStdString());
+    const std::string before = test::read_text(path.toStdString());
     RawAnnotatedClip broken = document.clip(0);
     broken.segment.reset(); // a kick needs its hit segment
     document.edit_clip(0, broken, ClipField::segment);
@@ -186,7 +179,7 @@ TEST_CASE("annotation document: saving an invalid file is refused and leaves the
     REQUIRE_FALSE(saved);
     CHECK_THAT(saved.error().message, Catch::Contains("segment"));
     CHECK(document.is_dirty());
-    CHECK(read_text(path.toStdString()) == before);
+    CHECK(test::read_text(path.toStdString()) == before);
     CHECK_FALSE(document.clip_messages(0).empty());
 }
 

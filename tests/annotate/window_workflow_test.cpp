@@ -10,6 +10,7 @@
 #include "scene_view.h"
 #include "support/test_paths.h"
 #include "timeline_strip.h"
+#include "window_test_support.h"
 
 #include "kumite/formats/motion_database_file.h"
 
@@ -26,7 +27,6 @@
 #include <QMouseEvent>
 #include <QPushButton>
 #include <QSettings>
-#include <QStandardPaths>
 #include <QThread>
 #include <QTimer>
 
@@ -41,25 +41,12 @@ using namespace kumite::annotate;
 
 namespace {
 
-const std::string k_kick_capture = "bandai-namco-1/dataset-1_kick_normal_001.bvh";
-
-QApplication& gui_application() {
-    static int argc = 1;
-    static char name[] = "annotate_window_tests";
-    static char* argv[] = {name, nullptr};
-    qputenv("QT_QPA_PLATFORM", "offscreen");
-    QStandardPaths::setTestModeEnabled(true); // recent files go to a test QSettings, not the user's
-    // Never destroyed: a QApplication torn down by static destruction, after Qt's own globals, crashes at exit.
-    static QApplication* application = new QApplication(argc, argv);
-    return *application;
-}
-
-void settle(int ms = 50) {
-    QElapsedTimer timer;
-    timer.start();
-    while (timer.elapsed() < ms) QApplication::processEvents(QEventLoop::AllEvents, 10);
-    QApplication::sendPostedEvents(nullptr, QEvent::DeferredDelete); // replaced list widgets really go
-}
+const std::string& k_kick_capture = test::k_window_kick_capture;
+using test::click_accept_buttons;
+using test::gui_application;
+using test::have_captures;
+using test::settle;
+using test::temp_mocap_root;
 
 bool wait_until(const std::function<bool()>& done, int timeout_ms = 10000) {
     QElapsedTimer timer;
@@ -124,42 +111,10 @@ void press_button(QMessageBox::StandardButton button) {
     answer_next_dialog<QMessageBox>([button](QMessageBox* box) { box->button(button)->click(); });
 }
 
-// A mocap root in a temp folder with the kick capture, so autosaves never land in the shared captures.
-std::filesystem::path temp_mocap_root(const std::string& stem) {
-    const std::filesystem::path root = test::make_temp_dir(stem);
-    std::filesystem::create_directories(root / "bandai-namco-1");
-    std::filesystem::copy_file(test::mocap_root() / k_kick_capture, root / k_kick_capture);
-    return root;
-}
-
-int click_accept_buttons(QWidget& window, int at_most) {
-    int clicked = 0;
-    while (clicked < at_most) {
-        QPushButton* accept = nullptr;
-        for (QPushButton* button : window.findChildren<QPushButton*>()) {
-            if (button->text() == "Accept" && button->isEnabled()) accept = button;
-        }
-        if (!accept) break;
-        accept->click();
-        settle(5);
-        ++clicked;
-    }
-    return clicked;
-}
-
 void send_mouse(QWidget* widget, QEvent::Type type, QPointF point, Qt::MouseButtons buttons) {
     QMouseEvent event(type, point, widget->mapToGlobal(point), Qt::LeftButton, buttons, Qt::NoModifier);
     QApplication::sendEvent(widget, &event);
 }
-
-std::string read_text(const std::filesystem::path& path) {
-    std::ifstream stream(path, std::ios::binary);
-    std::ostringstream text;
-    text << stream.rdbuf();
-    return text.str();
-}
-
-bool have_captures() { return std::filesystem::exists(test::mocap_root() / k_kick_capture); }
 
 } // namespace
 
@@ -182,7 +137,7 @@ TEST_CASE("annotate window: three right kicks from suggestions, saved, baked, he
     REQUIRE(window.save());
     CHECK_FALSE(window.isWindowModified());
     CHECK(document.file_path().toStdString() == saved.string());
-    CHECK(read_text(saved) == annotations_write_string(document.annotations()));
+    CHECK(test::read_text(saved) == annotations_write_string(document.annotations()));
     for (int index = 0; index < 3; ++index) CHECK(document.clip(index).source == k_kick_capture);
 
     const std::filesystem::path database = root / "kicks.kdb";
@@ -287,7 +242,7 @@ TEST_CASE("annotate window child: edit then get killed", "[.annotate_window_chil
     settle();
     REQUIRE(click_accept_buttons(window, 2) == 2);
     const std::filesystem::path sidecar = std::string(file) + ".autosave";
-    REQUIRE(wait_until([&] { return read_text(sidecar) == window.document().text(); }));
+    REQUIRE(wait_until([&] { return test::read_text(sidecar) == window.document().text(); }));
     std::raise(SIGKILL);
 }
 
@@ -302,14 +257,14 @@ TEST_CASE("annotate window: a killed window's edits are offered back and recover
         document.add_suggestion(document.current_capture()->suggestions.front(), k_kick_capture);
         REQUIRE(document.save_as(QString::fromStdString(file.string())));
     }
-    const std::string saved_text = read_text(file);
+    const std::string saved_text = test::read_text(file);
     const test::CommandOutput child = test::run_command(
         "KUMITE_ANNOTATE_CHILD_FILE=" + file.string() + " KUMITE_ANNOTATE_CHILD_ROOT=" + root.string() + " " +
         (test::bin_dir() / "annotate_window_tests").string() + " \"annotate window child: edit then get killed\"");
     INFO(child.out << child.err);
     REQUIRE(child.status == 128 + SIGKILL);
-    CHECK(read_text(file) == saved_text); // the file itself was never touched
-    const std::string autosaved = read_text(file.string() + ".autosave");
+    CHECK(test::read_text(file) == saved_text); // the file itself was never touched
+    const std::string autosaved = test::read_text(file.string() + ".autosave");
     REQUIRE_FALSE(autosaved.empty());
     Result<RawAnnotations> recovered_clips = annotations_parse(autosaved, "autosave");
     REQUIRE(recovered_clips);
@@ -323,7 +278,7 @@ TEST_CASE("annotate window: a killed window's edits are offered back and recover
     CHECK(window.document().is_dirty());
     CHECK(window.isWindowModified());
     REQUIRE(window.save()); // to the file it came from: no dialog
-    CHECK(read_text(file) == autosaved);
+    CHECK(test::read_text(file) == autosaved);
     CHECK_FALSE(std::filesystem::exists(file.string() + ".autosave"));
 }
 
@@ -451,7 +406,7 @@ TEST_CASE("annotate window: from an empty annotation file, accepted kicks save i
         CHECK(clip.segment == BodyPart::foot_r);
         CHECK(clip.source == k_kick_capture);
     }
-    CHECK(read_text(file) == annotations_write_string(*saved));
+    CHECK(test::read_text(file) == annotations_write_string(*saved));
     // Both files are in the recent list (QSettings, a test location here), newest first.
     const QStringList recent = QSettings().value("recent_files").toStringList();
     REQUIRE(recent.size() >= 2);

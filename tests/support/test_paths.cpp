@@ -55,4 +55,11 @@ CommandOutput run_command(const std::string& command) {
     return output;
 }
 
+std::string read_text(const std::filesystem::path& path) {
+    std::ifstream stream(path, std::ios::binary);
+    std::ostringstream text;
+    text << stream.rdbuf();
+    return text.str();
+}
+
 } // namespace kumite::test

@@ -18,6 +18,9 @@ std::vector<std::filesystem::path> corpus_files();
 // A fresh, empty folder under the system temp folder, removed by the OS eventually.
 std::filesystem::path make_temp_dir(const std::string& stem);
 
+// A whole file's bytes ("" when it cannot be read).
+std::string read_text(const std::filesystem::path& path);
+
 // Runs a shell command, capturing stdout and stderr; returns the exit status.
 struct CommandOutput {
     int status = -1;

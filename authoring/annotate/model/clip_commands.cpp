@@ -15,6 +15,8 @@ QString clip_field_command_text(ClipField field) {
     case ClipField::side: return QObject::tr("Set Side");
     case ClipField::mirror: return QObject::tr("Toggle Mirror");
     case ClipField::source: return QObject::tr("Set Source");
+    case ClipField::kind: return QObject::tr("Set Strike Kind");
+    case ClipField::height: return QObject::tr("Set Strike Height");
     case ClipField::other: break;
     }
     return QObject::tr("Edit Clip");
@@ -23,7 +25,7 @@ QString clip_field_command_text(ClipField field) {
 bool clips_equal(const RawAnnotatedClip& a, const RawAnnotatedClip& b) {
     return a.name == b.name && a.source == b.source && a.first_frame == b.first_frame && a.last_frame == b.last_frame &&
            a.semantics == b.semantics && a.segment == b.segment && a.side == b.side && a.hit_frame == b.hit_frame &&
-           a.mirror == b.mirror && a.extra_json == b.extra_json;
+           a.mirror == b.mirror && a.kind == b.kind && a.height == b.height && a.extra_json == b.extra_json;
 }
 
 SetClipCommand::SetClipCommand(AnnotationDocument& document, int index, RawAnnotatedClip before, RawAnnotatedClip after,

@@ -12,9 +12,10 @@ namespace kumite::annotate {
 
 class AnnotationDocument;
 
-enum class ClipField { other = 0, name, first_frame, last_frame, hit_frame, semantics, segment, side, mirror, source };
+enum class ClipField { other = 0, name, first_frame, last_frame, hit_frame, semantics, segment, side, mirror, source, kind, height };
 
 QString clip_field_command_text(ClipField field); // "Move In Point", "Set Hit Frame", ...
+// Every field, the strike labels (kind, height) and the unknown keys included.
 bool clips_equal(const RawAnnotatedClip& a, const RawAnnotatedClip& b);
 
 class SetClipCommand : public QUndoCommand {

@@ -1,5 +1,7 @@
 #include "clip_panel.h"
 
+#include "clip_labels.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFormLayout>
@@ -12,6 +14,7 @@
 #include <QStyle>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <filesystem>
 
 namespace kumite::annotate {
@@ -30,6 +33,7 @@ QString part_text(BodyPart part) {
 ClipPanel::ClipPanel(AnnotationDocument& document, QWidget* parent) : QWidget(parent), m_document(document) {
     auto* layout = new QVBoxLayout(this);
     m_list = new QListWidget(this);
+    m_list->setObjectName(QStringLiteral("clip_list"));
     layout->addWidget(m_list, 1);
     auto* buttons = new QHBoxLayout;
     auto* add = new QPushButton(tr("Add Clip"), this);
@@ -45,10 +49,20 @@ ClipPanel::ClipPanel(AnnotationDocument& document, QWidget* parent) : QWidget(pa
     m_source = new QLabel(m_fields);
     m_source->setWordWrap(true);
     m_semantics = new QComboBox(m_fields);
+    m_semantics->setObjectName(QStringLiteral("clip_semantics"));
     m_semantics->setEditable(true); // other lower-case semantics are allowed by the file format
     m_semantics->addItems(k_semantics);
     m_side = new QComboBox(m_fields);
     m_side->addItems({tr("none"), tr("left"), tr("right")});
+    m_kind = new QComboBox(m_fields);
+    m_kind->setObjectName(QStringLiteral("clip_kind"));
+    m_kind->setToolTip(tr("The strike's kind: only those of its semantics (a hook is a punch); none leaves it unlabelled"));
+    m_height = new QComboBox(m_fields);
+    m_height->setObjectName(QStringLiteral("clip_height"));
+    for (int height = 0; height < k_strike_height_count; ++height) {
+        m_height->addItem(QString::fromLatin1(strike_height_name(static_cast<StrikeHeight>(height))));
+    }
+    m_height->setToolTip(tr("Where the strike lands: low below the hip, high above the shoulder; none: unlabelled"));
     m_segment = new QComboBox(m_fields);
     m_segment->addItem(tr("(none)"));
     for (int part = 0; part < k_body_part_count; ++part) m_segment->addItem(part_text(static_cast<BodyPart>(part)));
@@ -65,6 +79,8 @@ ClipPanel::ClipPanel(AnnotationDocument& document, QWidget* parent) : QWidget(pa
     form->addRow(tr("Capture"), m_source);
     form->addRow(tr("Semantics"), m_semantics);
     form->addRow(tr("Side"), m_side);
+    form->addRow(tr("Kind"), m_kind);
+    form->addRow(tr("Height"), m_height);
     form->addRow(tr("Hit segment"), m_segment);
     form->addRow(tr("In frame"), m_first);
     form->addRow(tr("Out frame"), m_last);
@@ -86,18 +102,25 @@ ClipPanel::ClipPanel(AnnotationDocument& document, QWidget* parent) : QWidget(pa
     connect(m_name, &QLineEdit::editingFinished, this, [this] {
         edit(ClipField::name, [this](RawAnnotatedClip& clip) { clip.name = m_name->text().trimmed().toStdString(); });
     });
-    // Typing in the editable box would make a step per key: the value counts once chosen or typed out.
+    // Typing in the editable box would make a step per key: the value counts once chosen or typed out. A kind
+    // the new semantics does not allow goes in the same step (punch -> kick turns a hook into none).
     auto apply_semantics = [this] {
         const std::string text = m_semantics->currentText().trimmed().toStdString();
-        edit(ClipField::semantics, [&](RawAnnotatedClip& clip) {
-            clip.semantics = text;
-            if (clip.is_strike() && !clip.hit_frame) clip.hit_frame = (clip.first_frame + clip.last_frame) / 2; // a strike needs one
-        });
+        edit(ClipField::semantics, [&](RawAnnotatedClip& clip) { clip = clip_with_semantics(std::move(clip), text); });
     };
     connect(m_semantics, &QComboBox::textActivated, this, apply_semantics);
     connect(m_semantics->lineEdit(), &QLineEdit::editingFinished, this, apply_semantics);
     connect(m_side, &QComboBox::currentIndexChanged, this, [this](int index) {
         edit(ClipField::side, [&](RawAnnotatedClip& clip) { clip.side = static_cast<Side>(index); });
+    });
+    connect(m_kind, &QComboBox::currentIndexChanged, this, [this](int index) {
+        if (index < 0) return;
+        const auto kind = static_cast<StrikeKind>(m_kind->itemData(index).toInt());
+        edit(ClipField::kind, [&](RawAnnotatedClip& clip) { clip.kind = kind; });
+    });
+    connect(m_height, &QComboBox::currentIndexChanged, this, [this](int index) {
+        if (index < 0) return;
+        edit(ClipField::height, [&](RawAnnotatedClip& clip) { clip.height = static_cast<StrikeHeight>(index); });
     });
     connect(m_segment, &QComboBox::currentIndexChanged, this, [this](int index) {
         edit(ClipField::segment, [&](RawAnnotatedClip& clip) {
@@ -191,7 +214,7 @@ void ClipPanel::refresh_list_item(int index) {
     const RawAnnotatedClip& clip = m_document.clip(index);
     const bool fine = m_document.clip_messages(index).empty();
     item->setText(QString::fromStdString(clip.name) + QStringLiteral("  (%1, %2-%3)")
-                                                          .arg(QString::fromStdString(clip.semantics))
+                                                          .arg(clip_labels_text(clip))
                                                           .arg(clip.first_frame)
                                                           .arg(clip.last_frame));
     item->setIcon(style()->standardIcon(fine ? QStyle::SP_DialogApplyButton : QStyle::SP_MessageBoxWarning));
@@ -208,6 +231,7 @@ void ClipPanel::refresh_fields() {
         m_semantics->setCurrentIndex(-1);
         m_side->setCurrentIndex(-1);
         m_segment->setCurrentIndex(-1);
+        refresh_labels(nullptr);
         m_messages->clear();
         return;
     }
@@ -220,6 +244,7 @@ void ClipPanel::refresh_fields() {
     m_semantics->setCurrentText(QString::fromStdString(clip.semantics));
     m_side->setCurrentIndex(static_cast<int>(clip.side));
     m_segment->setCurrentIndex(clip.segment ? static_cast<int>(*clip.segment) + 1 : 0);
+    refresh_labels(&clip);
     m_first->setRange(0, max_frame);
     m_last->setRange(0, max_frame);
     m_hit->setRange(-1, max_frame);
@@ -230,6 +255,32 @@ void ClipPanel::refresh_fields() {
     QStringList messages;
     for (const std::string& message : m_document.clip_messages(selected)) messages << QString::fromStdString(message);
     m_messages->setText(messages.join(QStringLiteral("\n")));
+}
+
+// The kind box holds the kinds of the clip's semantics, which an edit may have changed; a kind the file holds that
+// does not fit stays listed so that it shows (the messages say what is wrong).
+void ClipPanel::refresh_labels(const RawAnnotatedClip* clip) {
+    const QSignalBlocker b1(m_kind), b2(m_height);
+    const bool strike = clip && clip->is_strike();
+    m_kind->setEnabled(strike);
+    m_height->setEnabled(strike);
+    if (!clip) {
+        m_kind->clear();
+        m_height->setCurrentIndex(-1);
+        return;
+    }
+    std::vector<StrikeKind> kinds = strike_kinds_offered(clip->semantics);
+    if (std::find(kinds.begin(), kinds.end(), clip->kind) == kinds.end()) kinds.push_back(clip->kind);
+    bool same_items = m_kind->count() == int(kinds.size());
+    for (int index = 0; same_items && index < m_kind->count(); ++index) {
+        same_items = m_kind->itemData(index).toInt() == static_cast<int>(kinds[size_t(index)]);
+    }
+    if (!same_items) { // rebuilt only when the list changes: this runs inside the box's own change signal too
+        m_kind->clear();
+        for (StrikeKind kind : kinds) m_kind->addItem(QString::fromLatin1(strike_kind_name(kind)), static_cast<int>(kind));
+    }
+    m_kind->setCurrentIndex(m_kind->findData(static_cast<int>(clip->kind)));
+    m_height->setCurrentIndex(static_cast<int>(clip->height));
 }
 
 } // namespace kumite::annotate

@@ -1,7 +1,8 @@
 #pragma once
-// The clip dock: the file's annotated clips in a list (a mark on those with problems), and the selected clip's
-// fields — name, semantics, side, hit segment, in/out/hit frames, mirror — each change one undo command, with
-// the clip's validation messages shown under the fields.
+// The clip dock: the file's annotated clips in a list ("name  (punch right hook high, 30-87)", a mark on those with
+// problems), and the selected clip's fields — name, semantics, side, strike kind and height, hit segment, in/out/hit
+// frames, mirror — each change one undo command, with the clip's validation messages shown under the fields. The
+// kind box offers only the kinds that fit the semantics; kind and height are for strikes only.
 
 #include "annotation_document.h"
 
@@ -31,6 +32,7 @@ private:
     void rebuild_list();
     void refresh_list_item(int index);
     void refresh_fields();
+    void refresh_labels(const RawAnnotatedClip* clip); // the kind and height boxes; null: no clip selected
     void edit(ClipField field, const std::function<void(RawAnnotatedClip&)>& change, int session = 0);
 
     AnnotationDocument& m_document;
@@ -42,6 +44,8 @@ private:
     QLabel* m_source = nullptr;
     QComboBox* m_semantics = nullptr;
     QComboBox* m_side = nullptr;
+    QComboBox* m_kind = nullptr;   // item data: the StrikeKind
+    QComboBox* m_height = nullptr; // index: the StrikeHeight
     QComboBox* m_segment = nullptr;
     QSpinBox* m_first = nullptr;
     QSpinBox* m_last = nullptr;

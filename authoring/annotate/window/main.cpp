@@ -25,8 +25,9 @@ std::optional<int> parse_command_line(int argc, char** argv, CommandLine& line) 
     QCoreApplication core(argc, argv);
     QCommandLineParser parser;
     parser.setApplicationDescription(QStringLiteral(
-        "The animator's window: open captures, trim them, tag strikes (hit segment, semantics, side, hit frame), check the\n"
-        "hit trajectory and its box, save the annotation file, bake the database and look at its pose-distance heatmap."));
+        "The animator's window: open captures, trim them, tag strikes (hit segment, semantics, side, kind, height, hit\n"
+        "frame), check the hit trajectory and its box, save the annotation file, bake the database and look at its\n"
+        "pose-distance heatmap."));
     parser.addHelpOption();
     parser.addPositionalArgument(QStringLiteral("files"), QStringLiteral("captures (.bvh), folders of captures or an annotation file (.json)"),
                                  QStringLiteral("[FILE.bvh | ANNOTATIONS.json | FOLDER]..."));

@@ -13,6 +13,11 @@
 namespace kumite::annotate {
 namespace {
 
+// The suggestion list's columns, the Accept button last.
+enum SuggestionColumn {
+    strike_column, kind_column, height_column, segment_column, hit_column, frames_column, confidence_column, accept_column
+};
+
 bool suggestion_accepted(const AnnotationDocument& document, const StrikeSuggestion& strike, const std::string& source) {
     for (int index = 0; index < document.clip_count(); ++index) {
         const RawAnnotatedClip& clip = document.clip(index);
@@ -53,7 +58,9 @@ TimelinePanel::TimelinePanel(AnnotationDocument& document, QWidget* parent) : QW
     layout->addWidget(m_strip);
 
     m_suggestions = new QTreeWidget(this);
-    m_suggestions->setHeaderLabels({tr("Suggested strike"), tr("Hit segment"), tr("Hit frame"), tr("Frames"), tr("Confidence"), QString()});
+    m_suggestions->setObjectName(QStringLiteral("suggestion_list"));
+    m_suggestions->setHeaderLabels({tr("Suggested strike"), tr("Kind"), tr("Height"), tr("Hit segment"), tr("Hit frame"), tr("Frames"),
+                                    tr("Confidence"), QString()});
     m_suggestions->setRootIsDecorated(false);
     m_suggestions->header()->setStretchLastSection(false);
     m_suggestions->setMinimumHeight(80);
@@ -211,27 +218,30 @@ void TimelinePanel::rebuild_suggestions() {
             const StrikeSuggestion& strike = capture->suggestions[index];
             spans.emplace_back(strike.first_frame, strike.last_frame);
             auto* item = new QTreeWidgetItem(m_suggestions);
-            item->setText(0, QString::fromLatin1(strike_semantics_name(strike.semantics)) + " " +
-                                 (strike.side == Side::left ? tr("left") : tr("right")));
-            item->setText(1, QString::fromLatin1(body_part_name(strike.segment).data(), qsizetype(body_part_name(strike.segment).size())));
-            item->setText(2, QString::number(strike.hit_frame));
-            item->setText(3, QStringLiteral("%1-%2").arg(strike.first_frame).arg(strike.last_frame));
-            item->setText(4, QString::number(strike.confidence, 'f', 2));
-            item->setData(0, Qt::UserRole, int(index));
+            item->setText(strike_column, QString::fromLatin1(strike_semantics_name(strike.semantics)) + " " +
+                                             (strike.side == Side::left ? tr("left") : tr("right")));
+            item->setText(kind_column, QString::fromLatin1(strike_kind_name(strike.labels.kind)));
+            item->setText(height_column, QString::fromLatin1(strike_height_name(strike.labels.height)));
+            item->setText(segment_column,
+                          QString::fromLatin1(body_part_name(strike.segment).data(), qsizetype(body_part_name(strike.segment).size())));
+            item->setText(hit_column, QString::number(strike.hit_frame));
+            item->setText(frames_column, QStringLiteral("%1-%2").arg(strike.first_frame).arg(strike.last_frame));
+            item->setText(confidence_column, QString::number(strike.confidence, 'f', 2));
+            item->setData(strike_column, Qt::UserRole, int(index));
             const bool accepted = suggestion_accepted(m_document, strike, capture->source);
             auto* accept = new QPushButton(accepted ? tr("Accepted") : tr("Accept"), m_suggestions);
             accept->setEnabled(!accepted);
-            accept->setToolTip(tr("Add this strike to the file as a clip (mirrored too)"));
+            accept->setToolTip(tr("Add this strike to the file as a clip (mirrored too), with its proposed kind and height"));
             const std::string source = capture->source;
             // Once only: the list is rebuilt right after, and the old buttons linger until deleted later.
             connect(accept, &QPushButton::clicked, this, [this, strike, source] {
                 if (!suggestion_accepted(m_document, strike, source)) m_document.add_suggestion(strike, source);
             });
-            m_suggestions->setItemWidget(item, 5, accept);
+            m_suggestions->setItemWidget(item, accept_column, accept);
             if (m_preview && *m_preview == int(index)) m_suggestions->setCurrentItem(item);
         }
     }
-    for (int column = 0; column < 5; ++column) m_suggestions->resizeColumnToContents(column);
+    for (int column = 0; column < accept_column; ++column) m_suggestions->resizeColumnToContents(column);
     m_strip->set_spans(std::move(spans));
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // The timeline dock: the capture on show (any the session opened), play/pause, step, scrub slider, frame and time readout, the strip with the trim handles and
-// the hit marker (timeline_strip.h), and the strikes `kumite suggest` proposes for the current capture. Selecting
-// a proposal previews it in the viewport; its Accept button adds it to the file as a clip, one undo step.
+// the hit marker (timeline_strip.h), and the strikes `kumite suggest` proposes for the current capture, with their
+// proposed kind and height. Selecting a proposal previews it in the viewport; its Accept button adds it to the file
+// as a clip (kind and height included), one undo step.
 
 #include "annotation_document.h"
 #include "timeline_strip.h"
