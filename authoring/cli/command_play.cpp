@@ -73,6 +73,8 @@ nlohmann::json quantiles_of(const ValueHistogram& values) {
 }
 
 const char* side_text(Side side) { return side == Side::left ? "left" : side == Side::right ? "right" : "any"; }
+// An order's kind or height: "any" when it named none.
+const char* label_text(const char* name) { return std::string_view(name) == "none" ? "any" : name; }
 
 bool display_present() {
     const char* x11 = std::getenv("DISPLAY");
@@ -90,8 +92,16 @@ nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
     case FighterEvent::Type::order:
         line["command"] = retriever.semantics_name(event.semantics);
         line["side"] = side_text(event.side);
+        line["kind"] = label_text(strike_kind_name(event.kind));
+        line["height"] = label_text(strike_height_name(event.height));
         break;
-    case FighterEvent::Type::ignored_order: line["why"] = event.why; break;
+    case FighterEvent::Type::ignored_order:
+        line["why"] = event.why;
+        if (event.semantics >= 0) line["command"] = retriever.semantics_name(event.semantics);
+        line["side"] = side_text(event.side);
+        line["kind"] = label_text(strike_kind_name(event.kind));
+        line["height"] = label_text(strike_height_name(event.height));
+        break;
     case FighterEvent::Type::state: line["state"] = fighter_state_name(event.state); break;
     case FighterEvent::Type::strike:
         line["result"] = event.hit ? "hit" : "miss";
@@ -99,6 +109,12 @@ nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
         line["head_distance_m"] = event.head_distance_m;
         line["range_m"] = event.range_m;
         line["clip"] = bout.database().string(bout.database().clips[event.clip].name);
+        line["kind"] = strike_kind_name(bout.database().clips[event.clip].strike_kind());
+        line["height"] = strike_height_name(bout.database().clips[event.clip].strike_height());
+        line["clip_side"] = side_text(static_cast<Side>(bout.database().clips[event.clip].side));
+        line["ordered"] = {{"side", side_text(event.side)}, {"kind", label_text(strike_kind_name(event.kind))},
+                           {"height", label_text(strike_height_name(event.height))}};
+        line["varied"] = event.varied;
         line["effector_speed_at_contact_mps"] = event.effector_speed_mps;
         line["outcome"] = event.impact ? "impact" : "follow_through";
         line["aim"] = fighter_aim_name(event.aim);
@@ -147,6 +163,22 @@ nlohmann::json play_report_json(const Bout& bout) {
                 counters.user_outcomes_by_target[target][static_cast<int>(outcome)];
         }
     }
+    // Strikes and hits by what the clips are (semantics, kind, height, side), and how many clips were used.
+    nlohmann::json by_kind = nlohmann::json::object();
+    int clips_used = 0;
+    const MotionDatabaseView& db = bout.database();
+    for (std::size_t c = 0; c < counters.by_clip.size(); ++c) {
+        const auto [strikes, hits] = counters.by_clip[c];
+        if (strikes == 0) continue;
+        ++clips_used;
+        const DbClip& clip = db.clips[c];
+        const std::string key = std::string(db.string(clip.semantics)) + " " + strike_kind_name(clip.strike_kind()) + " " +
+                                strike_height_name(clip.strike_height()) + " " + side_text(static_cast<Side>(clip.side));
+        nlohmann::json& entry = by_kind[key];
+        if (entry.is_null()) entry = {{"strikes", 0LL}, {"hits", 0LL}};
+        entry["strikes"] = entry.value("strikes", 0LL) + strikes;
+        entry["hits"] = entry.value("hits", 0LL) + hits;
+    }
     const double mean_latency = counters.command_to_strike_frames.mean(), max_latency = counters.command_to_strike_frames.max();
     return {{"frames", counters.frames},
             {"fighters", bout.fighter_count()},
@@ -166,6 +198,8 @@ nlohmann::json play_report_json(const Bout& bout) {
             {"effector_speed_at_contact_mps", quantiles_of(counters.contact_speed_mps)},
             {"joint_limit_violations", counters.joint_limit_violations},
             {"aim", fighter_aim_name(bout.fighter(0).aim())},
+            {"by_kind", by_kind},
+            {"clips_used", clips_used},
             {"by_aim",
              {{"latched", {{"strikes", counters.latched_strikes}, {"hits", counters.latched_hits}}},
               {"predicted", {{"strikes", counters.predicted_strikes}, {"hits", counters.predicted_hits}}}}},

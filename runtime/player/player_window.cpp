@@ -23,8 +23,14 @@ struct KeyCommand {
 const KeyCommand k_keys[] = {{Qt::Key_1, "1", "punch"},      {Qt::Key_2, "2", "punch left"}, {Qt::Key_3, "3", "punch right"},
                              {Qt::Key_4, "4", "kick"},       {Qt::Key_5, "5", "kick left"},  {Qt::Key_6, "6", "kick right"}};
 
+// What the strike keys add to their order: J cycles the punch kind, K the kick kind, H the height (index 0: any).
+const char* const k_punch_kinds[] = {"", "straight", "hook", "uppercut"};
+const char* const k_kick_kinds[] = {"", "front", "roundhouse", "side"};
+const char* const k_heights[] = {"", "low", "middle", "high"};
+
 const char* k_help =
-    "1/2/3 punch any/left/right   4/5/6 kick any/left/right   C next character   A aim latched / predicted   D defence on / off\n"
+    "1/2/3 punch any/left/right   4/5/6 kick any/left/right   J punch kind   K kick kind   H height   C next character\n"
+    "A aim latched / predicted   D defence on / off   "
     "V orbit / head-coupled   S mono / side-by-side   F frame   Space pause   Esc quit   mouse: orbit, pan, zoom";
 
 class PlayerWindow : public QWidget {
@@ -56,9 +62,12 @@ public:
 protected:
     void keyPressEvent(QKeyEvent* event) override {
         for (const KeyCommand& key : k_keys) {
-            if (event->key() == key.key) return send(key.command);
+            if (event->key() == key.key) return send(with_labels(key.command));
         }
         switch (event->key()) {
+        case Qt::Key_J: m_punch_kind = (m_punch_kind + 1) % 4; return;
+        case Qt::Key_K: m_kick_kind = (m_kick_kind + 1) % 4; return;
+        case Qt::Key_H: m_height = (m_height + 1) % 4; return;
         case Qt::Key_C: {
             const Fighter& fighter = m_bout.fighter(0);
             send("character " + m_bout.character_name((fighter.character() + 1) % m_bout.character_count()));
@@ -83,6 +92,15 @@ protected:
     }
 
 private:
+    // A strike key's order with the kind and height chosen with J, K and H.
+    std::string with_labels(std::string line) const {
+        const char* kind = line.starts_with("kick") ? k_kick_kinds[m_kick_kind] : k_punch_kinds[m_punch_kind];
+        if (*kind) line += std::string(" ") + kind;
+        if (*k_heights[m_height]) line += std::string(" ") + k_heights[m_height];
+        return line;
+    }
+    static const char* or_any(const char* label) { return *label ? label : "any"; }
+
     void send(const std::string& line) {
         if (Result<void> sent = m_bout.command(line); !sent) note("error: " + sent.error().message);
         else note("> " + line);
@@ -169,12 +187,16 @@ private:
 
     void describe(const BoutEvent& bout_event) {
         const FighterEvent& e = bout_event.event;
-        char text[160];
+        char text[224];
         switch (e.type) {
-        case FighterEvent::Type::strike:
-            std::snprintf(text, sizeof text, "%.1f s  fighter %d: %s (%s, %s), contact error %.1f cm", e.t_s, bout_event.fighter,
-                          e.hit ? "HIT" : "miss", target_part_name(e.target_part), fighter_aim_name(e.aim), e.contact_error_m * 100.0);
+        case FighterEvent::Type::strike: {
+            const DbClip& clip = m_bout.database().clips[e.clip];
+            std::snprintf(text, sizeof text, "%.1f s  fighter %d: %s %s %s: %s (%s, %s), contact error %.1f cm", e.t_s, bout_event.fighter,
+                          std::string(m_bout.database().string(clip.semantics)).c_str(), strike_kind_name(clip.strike_kind()),
+                          strike_height_name(clip.strike_height()), e.hit ? "HIT" : "miss", target_part_name(e.target_part), fighter_aim_name(e.aim),
+                          e.contact_error_m * 100.0);
             break;
+        }
         case FighterEvent::Type::ignored_order: std::snprintf(text, sizeof text, "%.1f s  order ignored: %s", e.t_s, e.why); break;
         case FighterEvent::Type::user_strike_end:
             std::snprintf(text, sizeof text, "%.1f s  user's %s at the %s: %s", e.t_s, e.user_strike.hand == 0 ? "left" : "right",
@@ -212,6 +234,10 @@ private:
                          .arg(c.slipped)
                          .arg(c.hit_by_user);
         }
+        lines += QString("orders: punch %1, kick %2, height %3 (J, K, H)\n")
+                     .arg(or_any(k_punch_kinds[m_punch_kind]))
+                     .arg(or_any(k_kick_kinds[m_kick_kind]))
+                     .arg(or_any(k_heights[m_height]));
         lines += QString("%1 camera%2  |  %3%4")
                      .arg(m_view->projection() == Projection::orbit ? "orbit" : "head-coupled")
                      .arg(m_view->stereo() == StereoMode::mono ? "" : ", stereo side by side")
@@ -221,7 +247,7 @@ private:
         QFont font = painter.font();
         font.setPointSizeF(10.0);
         painter.setFont(font);
-        const QRect top(rect.left() + 10, rect.top() + 8, rect.width() - 20, 90);
+        const QRect top(rect.left() + 10, rect.top() + 8, rect.width() - 20, 110);
         painter.setPen(QColor(0, 0, 0, 160));
         painter.drawText(top.translated(1, 1), Qt::AlignLeft | Qt::AlignTop, lines);
         painter.setPen(QColor(235, 238, 245));
@@ -231,7 +257,7 @@ private:
         const QRect right(rect.right() - 420, rect.top() + 8, 410, 120);
         painter.setPen(QColor(255, 220, 140));
         painter.drawText(right, Qt::AlignRight | Qt::AlignTop, log);
-        const QRect bottom(rect.left() + 10, rect.bottom() - 44, rect.width() - 20, 40);
+        const QRect bottom(rect.left() + 10, rect.bottom() - 60, rect.width() - 20, 56);
         painter.setPen(QColor(180, 190, 210));
         painter.drawText(bottom, Qt::AlignLeft | Qt::AlignBottom, k_help);
         painter.restore();
@@ -246,6 +272,7 @@ private:
     double m_next_s = 0.0, m_paused_s = 0.0, m_last_wall_s = 0.0, m_fps = 0.0;
     int m_frames_drawn = 0;
     bool m_paused = false;
+    int m_punch_kind = 0, m_kick_kind = 0, m_height = 0; // indices into k_punch_kinds, k_kick_kinds, k_heights
     std::deque<QString> m_log;
 };
 

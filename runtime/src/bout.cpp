@@ -21,6 +21,7 @@ Result<std::unique_ptr<Bout>> Bout::create(const MotionDatabaseView& database, s
     if (!tracker) return make_error(ErrorCode::invalid, "a bout needs a head tracker");
     std::unique_ptr<Bout> bout(new Bout());
     bout->m_db = database;
+    bout->m_counters.by_clip.assign(database.clips.size(), {0, 0});
     bout->m_options = options;
     bout->m_tracker = std::move(tracker);
     for (BoutCharacter& given : characters) {
@@ -98,11 +99,15 @@ void Bout::apply(std::string_view line, const std::string& where) {
     }
     switch (command->verb) {
     case SupervisorCommand::Verb::punch:
-    case SupervisorCommand::Verb::kick: {
-        const Side side = command->side == "left" ? Side::left : command->side == "right" ? Side::right : Side::none;
+    case SupervisorCommand::Verb::kick:
+    case SupervisorCommand::Verb::slash: {
+        StrikeOrder order;
+        order.side = command->side == "left" ? Side::left : command->side == "right" ? Side::right : Side::none;
+        order.kind = command->kind;
+        order.height = command->height;
+        order.semantics = m_retriever->semantics_id(command->semantics());
         m_tracker->on_order(m_now_s);
-        const int semantics = m_retriever->semantics_id(command->verb == SupervisorCommand::Verb::punch ? "punch" : "kick");
-        for (auto& fighter : m_fighters) fighter->order(semantics, side);
+        for (auto& fighter : m_fighters) fighter->order(order);
         break;
     }
     case SupervisorCommand::Verb::character: {
@@ -165,6 +170,10 @@ void Bout::step(double t_s) {
                 m_counters.last_contact_error_m = event.contact_error_m;
                 m_counters.last_hit = event.hit;
                 m_counters.contact_speed_mps.add(event.effector_speed_mps);
+                if (event.clip >= 0 && event.clip < static_cast<int>(m_counters.by_clip.size())) {
+                    m_counters.by_clip[event.clip][0] += 1;
+                    m_counters.by_clip[event.clip][1] += event.hit;
+                }
                 if (event.prediction_error_m < 1e8) m_counters.prediction_error_m.add(event.prediction_error_m);
                 (event.aim == FighterAim::predicted ? m_counters.predicted_strikes : m_counters.latched_strikes) += 1;
                 (event.aim == FighterAim::predicted ? m_counters.predicted_hits : m_counters.latched_hits) += event.hit;

@@ -8,6 +8,7 @@
 #include "kumite/core/smoothstep.h"
 
 #include <algorithm>
+#include <limits>
 #include <cmath>
 
 namespace kumite {
@@ -110,8 +111,10 @@ void Fighter::emit_ignored(double t_s, const char* why) {
     FighterEvent event;
     event.type = FighterEvent::Type::ignored_order;
     event.t_s = t_s;
-    event.semantics = m_pending_semantics;
-    event.side = m_pending_side;
+    event.semantics = m_pending_order.semantics;
+    event.side = m_pending_order.side;
+    event.kind = m_pending_order.kind;
+    event.height = m_pending_order.height;
     event.why = why;
     push_event(event);
 }
@@ -127,25 +130,22 @@ void Fighter::enter(FighterState state, double t_s) {
     push_event(event);
 }
 
-bool Fighter::order(int semantics, Side side) {
+bool Fighter::order(const StrikeOrder& order) {
     const char* why = "";
-    if (!order_fits(semantics, why)) { // the pending order, if any, stays as it was
-        FighterEvent event;
+    FighterEvent event;
+    event.t_s = m_now_s;
+    event.semantics = order.semantics;
+    event.side = order.side;
+    event.kind = order.kind;
+    event.height = order.height;
+    if (!order_fits(order, why)) { // the pending order, if any, stays as it was
         event.type = FighterEvent::Type::ignored_order;
-        event.t_s = m_now_s;
-        event.semantics = semantics;
-        event.side = side;
         event.why = why;
         push_event(event);
         return false;
     }
-    m_pending_semantics = semantics;
-    m_pending_side = side;
-    FighterEvent event;
+    m_pending_order = order;
     event.type = FighterEvent::Type::order;
-    event.t_s = m_now_s;
-    event.semantics = semantics;
-    event.side = side;
     push_event(event);
     m_pending = true;
     m_pending_since_s = m_now_s;
@@ -155,13 +155,17 @@ bool Fighter::order(int semantics, Side side) {
     return true;
 }
 
-bool Fighter::order_fits(int semantics, const char*& why) const {
+bool Fighter::order_fits(const StrikeOrder& order, const char*& why) const {
     if (m_state == FighterState::strike || m_state == FighterState::recover || m_pending) {
         why = "already striking";
         return false;
     }
-    if (semantics < 0) {
+    if (order.semantics < 0) {
         why = "the database has no such strike";
+        return false;
+    }
+    if (m_retriever.candidate_count(order.semantics, order.side, order.kind, order.height) == 0) {
+        why = "the database has no strike of that side, kind and height";
         return false;
     }
     if (m_defence.active()) {
@@ -169,6 +173,33 @@ bool Fighter::order_fits(int semantics, const char*& why) const {
         return false;
     }
     return true;
+}
+
+void Fighter::remember_strike(int clip) {
+    m_recent_clips[m_recent_next] = clip;
+    m_recent_next = (m_recent_next + 1) % k_max_variety_recent;
+    m_recent_count = std::min(m_recent_count + 1, k_max_variety_recent);
+}
+
+RetrievalResult Fighter::query_with_variety(RetrievalQuery& query, bool& varied) {
+    varied = false;
+    query.excluded_clips = {};
+    query.score_limit = std::numeric_limits<double>::infinity();
+    RetrievalResult best = m_retriever.query(query, m_workspace);
+    const int recent = std::min({m_settings.variety_recent, m_recent_count, k_max_variety_recent});
+    if (!best.found || recent <= 0 || m_settings.variety_margin <= 0.0) return best;
+    // The last `recent` clips, newest first: m_recent_clips is a ring.
+    std::array<int, k_max_variety_recent> excluded{};
+    for (int k = 0; k < recent; ++k) excluded[k] = m_recent_clips[(m_recent_next - 1 - k + k_max_variety_recent) % k_max_variety_recent];
+    if (std::find(excluded.begin(), excluded.begin() + recent, best.clip) == excluded.begin() + recent) return best;
+    query.excluded_clips = std::span<const int>(excluded.data(), recent);
+    query.score_limit = best.score + m_settings.variety_margin;
+    RetrievalResult other = m_retriever.query(query, m_workspace);
+    query.excluded_clips = {};
+    query.score_limit = std::numeric_limits<double>::infinity();
+    if (!other.found) return best;
+    varied = true;
+    return other;
 }
 
 void Fighter::set_character(int index) {
@@ -302,8 +333,11 @@ FighterEvent Fighter::strike_event(FighterEvent::Type type, double t_s) const {
     FighterEvent event;
     event.type = type;
     event.t_s = t_s;
-    event.semantics = m_strike_semantics;
-    event.side = m_strike_side;
+    event.semantics = m_strike_order.semantics;
+    event.side = m_strike_order.side;
+    event.kind = m_strike_order.kind;
+    event.height = m_strike_order.height;
+    event.varied = m_strike_varied;
     event.clip = m_plan.clip;
     event.impact = m_strike_impact;
     event.aim = m_strike_aim;

@@ -53,8 +53,10 @@ void Fighter::start_strike(double t_s) {
     RetrievalQuery query;
     query.pose_feature = m_feature;
     query.heading = body.rig->heading();
-    query.semantics = m_pending_semantics;
-    query.side = m_pending_side;
+    query.semantics = m_pending_order.semantics;
+    query.side = m_pending_order.side;
+    query.kind = m_pending_order.kind;
+    query.height = m_pending_order.height;
     query.character = body.rig->size();
     // The head, else the highest point of the body a strike reaches.
     const int parts = m_settings.reach_fallback ? 4 : 1;
@@ -113,8 +115,9 @@ void Fighter::start_strike(double t_s) {
     m_strike_violations = 0;
     m_strike_impact = true;
     m_previous_effector_s = -1.0;
-    m_strike_semantics = m_pending_semantics;
-    m_strike_side = m_pending_side;
+    m_strike_order = m_pending_order;
+    m_strike_varied = m_pending_varied;
+    remember_strike(found.clip);
     m_strike_range_m = distance_to_user();
     enter(FighterState::strike, t_s); // plan_strike began the adaptation
 }
@@ -123,7 +126,7 @@ RetrievalResult Fighter::retrieve_strike(RetrievalQuery& query, double drop_m, E
     const Eigen::Vector3d drop(0.0, drop_m, 0.0);
     target = m_pending_head - drop; // latched: where the head was at the order
     query.target_world = target;
-    RetrievalResult found = m_retriever.query(query, m_workspace);
+    RetrievalResult found = query_with_variety(query, m_pending_varied);
     if (m_settings.aim != FighterAim::predicted || !m_head_motion.ready()) return found;
     // The contact time depends on the strike, and the strike on the target: a few rounds settle both (each moves
     // the target by the head's speed times the change of contact time; they stop within a centimetre).
@@ -132,7 +135,7 @@ RetrievalResult Fighter::retrieve_strike(RetrievalQuery& query, double drop_m, E
         if ((predicted - target).norm() < 0.01) break;
         target = predicted;
         query.target_world = target;
-        found = m_retriever.query(query, m_workspace);
+        found = query_with_variety(query, m_pending_varied);
     }
     return found;
 }

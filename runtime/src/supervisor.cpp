@@ -29,17 +29,35 @@ Result<SupervisorCommand> supervisor_command_parse(std::string_view line) {
         return word;
     };
     const std::string_view verb = next_word();
+    SupervisorCommand command;
+    if (verb == "punch" || verb == "kick" || verb == "slash") {
+        command.verb = verb == "punch" ? SupervisorCommand::Verb::punch : verb == "kick" ? SupervisorCommand::Verb::kick : SupervisorCommand::Verb::slash;
+        // Side, kind and height, each at most once, in any order.
+        for (std::string_view word = next_word(); !word.empty(); word = next_word()) {
+            const std::string text(word);
+            if (word == "left" || word == "right") {
+                if (!command.side.empty()) return make_error(ErrorCode::invalid, "two sides ('" + command.side + "' and '" + text + "')");
+                command.side = text;
+            } else if (const std::optional<StrikeKind> kind = strike_kind_from_name(word); kind && *kind != StrikeKind::none) {
+                if (!strike_kind_fits(command.semantics(), *kind)) {
+                    return make_error(ErrorCode::invalid, std::string("a ") + command.semantics() + " cannot be a " + text +
+                                                              (verb == "punch" ? " (straight, hook, uppercut)" : verb == "kick" ? " (front, roundhouse, side)" : ""));
+                }
+                if (command.kind != StrikeKind::none) return make_error(ErrorCode::invalid, "two kinds ('" + std::string(strike_kind_name(command.kind)) + "' and '" + text + "')");
+                command.kind = *kind;
+            } else if (const std::optional<StrikeHeight> height = strike_height_from_name(word); height && *height != StrikeHeight::none) {
+                if (command.height != StrikeHeight::none) return make_error(ErrorCode::invalid, "two heights ('" + std::string(strike_height_name(command.height)) + "' and '" + text + "')");
+                command.height = *height;
+            } else {
+                return make_error(ErrorCode::invalid, "'" + text + "' is not a side (left, right), a kind or a height (low, middle, high)");
+            }
+        }
+        return command;
+    }
     const std::string_view argument = next_word();
     const std::string_view extra = next_word();
-    SupervisorCommand command;
     if (!extra.empty()) return make_error(ErrorCode::invalid, "too many words");
-    if (verb == "punch" || verb == "kick") {
-        command.verb = verb == "punch" ? SupervisorCommand::Verb::punch : SupervisorCommand::Verb::kick;
-        if (!argument.empty() && argument != "left" && argument != "right") {
-            return make_error(ErrorCode::invalid, "the side must be left or right, not '" + std::string(argument) + "'");
-        }
-        command.side = argument;
-    } else if (verb == "character") {
+    if (verb == "character") {
         if (argument.empty()) return make_error(ErrorCode::invalid, "character needs a NAME");
         command.verb = SupervisorCommand::Verb::character;
         command.argument = argument;
@@ -57,7 +75,7 @@ Result<SupervisorCommand> supervisor_command_parse(std::string_view line) {
         if (!argument.empty()) return make_error(ErrorCode::invalid, "quit takes nothing");
         command.verb = SupervisorCommand::Verb::quit;
     } else {
-        return make_error(ErrorCode::invalid, "unknown command '" + std::string(verb) + "' (punch, kick, character, aim, defence, quit)");
+        return make_error(ErrorCode::invalid, "unknown command '" + std::string(verb) + "' (punch, kick, slash, character, aim, defence, quit)");
     }
     return command;
 }

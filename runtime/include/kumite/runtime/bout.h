@@ -56,6 +56,7 @@ struct BoutCounters {
     ValueHistogram forearm_to_path_m{1e-4, 10.0};
     long long defence_joint_limit_violations = 0;
     double defence_foot_shift_m = 0.0; // the largest
+    std::vector<std::array<long long, 2>> by_clip; // [database clip] strikes, hits (sized once, at the bout's start)
     double last_contact_error_m = -1.0;         // of the last strike; -1 before any
     bool last_hit = false;
 };

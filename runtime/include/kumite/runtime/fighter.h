@@ -42,6 +42,15 @@ std::optional<FighterAim> fighter_aim_from_name(std::string_view name);
 enum class TargetPart { head, chin, chest, solar_plexus };
 const char* target_part_name(TargetPart part);
 
+// What the supervisor asks for: a semantics (Retriever::semantics_id) and, optionally, the side, kind and height
+// (none: any). An order the database cannot serve is refused, not replaced by another strike.
+struct StrikeOrder {
+    int semantics = -1;
+    Side side = Side::none;
+    StrikeKind kind = StrikeKind::none;
+    StrikeHeight height = StrikeHeight::none;
+};
+
 struct FighterSettings {
     double rate_hz = 60.0;
     double hit_radius_m = 0.12;      // a strike hits when the effector is this close to the head at contact
@@ -62,7 +71,13 @@ struct FighterSettings {
     DefenceSettings defence;         // blocks and slips against the user's tracked hands (defence.h)
     double wait_for_reach_s = 1.5;   // an order no strike reaches waits this long for the fighter to step in (the
                                      // target stays latched), then strikes at the head anyway
+    // Variety: when the best strike for an order is one of the last `variety_recent` clips struck, the best other
+    // clip is taken instead if its score is within `variety_margin` of the best (score units: leg lengths of pose
+    // and target distance). 0 recent: always the best.
+    int variety_recent = 3;
+    double variety_margin = 0.15;
 };
+inline constexpr int k_max_variety_recent = 8;
 
 struct FighterEvent {
     enum class Type { order, ignored_order, state, strike, strike_end, tracker_lost, tracker_back, character, user_strike, user_strike_end };
@@ -71,6 +86,9 @@ struct FighterEvent {
     FighterState state = FighterState::rest; // state events: the new state
     int semantics = -1;                      // order and strike events
     Side side = Side::none;
+    StrikeKind kind = StrikeKind::none;      // order and strike events: what the order asked for (none: any)
+    StrikeHeight height = StrikeHeight::none;
+    bool varied = false;                     // strike events: not the best clip, to vary from the last strikes
     int clip = -1;                           // strike events
     bool hit = false;
     double contact_error_m = 0.0;            // effector to the latched target at contact
@@ -108,7 +126,8 @@ public:
     // An order, taken at the next step. Returns false when it is ignored at once (already striking or recovering,
     // or a semantics the database lacks); the reason is also an event. An order the next step cannot carry out
     // (the tracker has no head, nothing fits) is ignored then, with an event.
-    bool order(int semantics, Side side);
+    bool order(const StrikeOrder& order);
+    bool order(int semantics, Side side) { return order(StrikeOrder{semantics, side}); }
     void set_character(int index);
     void set_aim(FighterAim aim) { m_settings.aim = aim; } // from the next strike on
     FighterAim aim() const { return m_settings.aim; }
@@ -157,7 +176,10 @@ private:
     void finish_frame();
     void defend(double t_s);        // follows the user's hands, starts and ends moves, emits their events
     void apply_defence();           // decodes the shown pose again with the move's edits (when one is on)
-    bool order_fits(int semantics, const char*& why) const;
+    bool order_fits(const StrikeOrder& order, const char*& why) const;
+    // A retrieval that prefers a clip not struck lately (FighterSettings::variety_recent); `varied` tells if it did.
+    RetrievalResult query_with_variety(RetrievalQuery& query, bool& varied);
+    void remember_strike(int clip);
     HeadingFrame heading_towards_user() const;
     double distance_to_user() const; // horizontal, pelvis to head
     double band_far_m() const;       // the far end of the distance band where strikes reach
@@ -195,8 +217,7 @@ private:
     double m_defence_foot_shift_m = 0.0; // how far they moved a foot, since then
     // orders
     bool m_pending = false;
-    int m_pending_semantics = -1;
-    Side m_pending_side = Side::none;
+    StrikeOrder m_pending_order;
     double m_pending_since_s = 0.0;
     Eigen::Vector3d m_pending_head = Eigen::Vector3d::Zero(); // the head at the order (latched aim)
     bool m_pending_tried = false; // every part was looked at once: the order waits for reach
@@ -219,8 +240,12 @@ private:
     MirFrame m_strike_start;
     double m_strike_start_s = 0.0;
     bool m_contact_done = false;
-    int m_strike_semantics = -1;
-    Side m_strike_side = Side::none;
+    StrikeOrder m_strike_order;
+    bool m_strike_varied = false;
+    bool m_pending_varied = false;               // the planned strike's retrieval took a varied clip
+    std::array<int, k_max_variety_recent> m_recent_clips{}; // the clips of the last strikes, newest at m_recent_next - 1
+    int m_recent_count = 0;
+    int m_recent_next = 0;
     double m_strike_range_m = 0.0;
     double m_strike_overshoot_m = 0.0;
     int m_strike_violations = 0;
