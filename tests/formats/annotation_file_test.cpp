@@ -115,3 +115,38 @@ TEST_CASE("annotation_file: the reference annotations fit their captures", "[for
     }
     for (const char* motion : {"rest", "step_forward", "step_back", "step_left", "step_right"}) CHECK(motions.count(motion) == 1);
 }
+
+TEST_CASE("annotation_file: version 1 files read as unlabelled strikes, version 2 keeps kind and height", "[formats]") {
+    Result<RawAnnotations> old = annotations_parse(k_annotations, "old.json");
+    REQUIRE(old.has_value());
+    CHECK(old->clips[0].kind == StrikeKind::none);
+    CHECK(old->clips[0].height == StrikeHeight::none);
+    old->clips[0].kind = StrikeKind::roundhouse;
+    old->clips[0].height = StrikeHeight::high;
+    const std::string written = annotations_write_string(*old);
+    const nlohmann::json document = nlohmann::json::parse(written);
+    CHECK(document["version"] == 2);
+    CHECK(document["clips"][0]["kind"] == "roundhouse");
+    CHECK(document["clips"][0]["height"] == "high");
+    CHECK_FALSE(document["clips"][1].contains("kind")); // a rest has none
+    Result<RawAnnotations> again = annotations_parse(written, "new.json");
+    REQUIRE(again.has_value());
+    CHECK(again->clips[0].kind == StrikeKind::roundhouse);
+    CHECK(again->clips[0].height == StrikeHeight::high);
+}
+
+TEST_CASE("annotation_file: a kind of another semantics, an unknown label, or labels on a rest are refused", "[formats]") {
+    auto with = [](const std::string& from, const std::string& to) {
+        std::string text = k_annotations;
+        text.replace(text.find(from), from.size(), to);
+        return text;
+    };
+    CHECK_THAT(error_of(with("\"mirror\": true,", "\"mirror\": true, \"kind\": \"hook\",")),
+               Catch::Contains("clip 0 (kick_r_060)") && Catch::Contains("a kick cannot be of kind \"hook\""));
+    CHECK_THAT(error_of(with("\"mirror\": true,", "\"mirror\": true, \"kind\": \"haymaker\",")), Catch::Contains("unknown \"kind\" \"haymaker\""));
+    CHECK_THAT(error_of(with("\"mirror\": true,", "\"mirror\": true, \"height\": \"knee\",")), Catch::Contains("unknown \"height\" \"knee\""));
+    CHECK_THAT(error_of(with("\"mirror\": true,", "\"mirror\": true, \"height\": 3,")), Catch::Contains("\"height\" must be a string"));
+    CHECK_THAT(error_of(with("\"semantics\": \"rest\"", "\"semantics\": \"rest\", \"height\": \"low\"")),
+               Catch::Contains("clip 1 (guard)") && Catch::Contains("not a strike"));
+    CHECK_THAT(error_of(with("\"version\": 1", "\"version\": 3")), Catch::Contains("version 3"));
+}

@@ -27,11 +27,46 @@ TEST_CASE("supervisor: command lines are parsed, bad ones explained", "[runtime]
     CHECK(supervisor_command_parse("quit")->verb == SupervisorCommand::Verb::quit);
     CHECK(supervisor_command_parse("aim predicted")->verb == SupervisorCommand::Verb::aim);
     CHECK(supervisor_command_parse("aim latched")->argument == "latched");
-    for (const char* bad : {"", "punch up", "kick left now", "character", "quit now", "dance", "aim", "aim ahead"}) {
+    for (const char* bad : {"", "punch up", "kick left now", "kick left high front middle", "character", "quit now", "dance", "aim", "aim ahead"}) {
         INFO(bad);
         const Result<SupervisorCommand> parsed = supervisor_command_parse(bad);
         REQUIRE_FALSE(parsed.has_value());
         CHECK(parsed.error().message.size() > 5);
+    }
+}
+
+TEST_CASE("supervisor: strike orders take side, kind and height in any order, each once, kinds of their semantics", "[runtime]") {
+    Result<SupervisorCommand> hook = supervisor_command_parse("punch high hook left");
+    REQUIRE(hook.has_value());
+    CHECK(hook->verb == SupervisorCommand::Verb::punch);
+    CHECK(hook->side == "left");
+    CHECK(hook->kind == StrikeKind::hook);
+    CHECK(hook->height == StrikeHeight::high);
+    Result<SupervisorCommand> kick = supervisor_command_parse("kick roundhouse");
+    REQUIRE(kick.has_value());
+    CHECK(kick->kind == StrikeKind::roundhouse);
+    CHECK(kick->height == StrikeHeight::none);
+    CHECK(kick->side.empty());
+    Result<SupervisorCommand> low = supervisor_command_parse("kick low");
+    REQUIRE(low.has_value());
+    CHECK(low->height == StrikeHeight::low);
+    CHECK(low->kind == StrikeKind::none);
+    Result<SupervisorCommand> slash = supervisor_command_parse("slash right middle");
+    REQUIRE(slash.has_value());
+    CHECK(std::string(slash->semantics()) == "slash");
+    const std::pair<const char*, const char*> bad[] = {{"punch roundhouse", "cannot be a roundhouse"},
+                                                       {"kick uppercut", "cannot be a uppercut"},
+                                                       {"punch left right", "two sides"},
+                                                       {"punch hook straight", "two kinds"},
+                                                       {"kick low high", "two heights"},
+                                                       {"punch sideways", "not a side"},
+                                                       {"punch none", "not a side"},
+                                                       {"slash hook", "cannot be a hook"}};
+    for (const auto& [line, why] : bad) {
+        INFO(line);
+        const Result<SupervisorCommand> parsed = supervisor_command_parse(line);
+        REQUIRE_FALSE(parsed.has_value());
+        CHECK_THAT(parsed.error().message, Catch::Contains(why));
     }
 }
 
