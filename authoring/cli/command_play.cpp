@@ -28,9 +28,10 @@ const CommandSpec& play_spec() {
         "play",
         "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:HEAD[,LEFT,RIGHT]] | replay:FILE | simulate:KIND|FILE] "
         "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] "
-        "[--aim latched|predicted] [--no-defence] [--record OUT.bvh] [--events OUT.jsonl] [--report OUT.json]",
+        "[--aim latched|predicted] [--variety N] [--no-defence] [--record OUT.bvh] [--events OUT.jsonl] [--report OUT.json]",
         "Runs the fighter at 60 Hz against the user's head and hands (a DTrack system, a replayed CSV, or a\n"
-        "simulated user) and the supervisor's commands, one per line: punch [left|right], kick [left|right],\n"
+        "simulated user) and the supervisor's commands, one per line: punch [left|right] [straight|hook|uppercut]\n"
+        "[low|middle|high], kick [left|right] [front|roundhouse|side] [low|middle|high], slash [left|right] [low|middle|high],\n"
         "character NAME, aim latched|predicted, defence on|off, quit (in a script file, each line starts with its\n"
         "time in seconds; on stdin or TCP on 127.0.0.1 they apply when they arrive). Headless runs use a simulated\n"
         "clock unless --realtime or the tracker is live. With a display and without --headless the viewer opens\n"
@@ -51,6 +52,7 @@ const CommandSpec& play_spec() {
          {"realtime", "", "step on the wall clock"},
          {"seed", "N", "seed of the simulated user (default 1)"},
          {"lead", "S", "the least time from an order's strike start to its contact (default 0.4 s)"},
+         {"variety", "N", "prefer a clip not used in the last N strikes when one scores within 0.15 of the best (default 3, 0: always the best)"},
          {"no-defence", "", "the fighter does not block or slip the user's strikes (also the command 'defence on|off', the viewer's D key)"},
          {"aim", "latched|predicted", "strike the head where it was at the order (default), or where it will be at the contact\n"
                                       "if it keeps its course (also the command 'aim latched|predicted' and the viewer's A key)"},
@@ -221,6 +223,8 @@ int run_play(int argc, char** argv) {
     const Result<long long> seed = arguments.integer("seed", 0, 1LL << 62, 1);
     if (!fighters_count) return usage_error(play_spec(), fighters_count.error().message);
     if (!seed) return usage_error(play_spec(), seed.error().message);
+    const Result<long long> variety = arguments.integer("variety", 0, k_max_variety_recent, 3);
+    if (!variety) return usage_error(play_spec(), variety.error().message);
     double lead_s = 0.4;
     if (const std::optional<std::string> text = arguments.value("lead")) {
         char* end = nullptr;
@@ -297,6 +301,7 @@ int run_play(int argc, char** argv) {
     options.lead_s = lead_s;
     options.fighter.aim = aim;
     options.fighter.defence.enabled = !arguments.has("no-defence");
+    options.fighter.variety_recent = static_cast<int>(*variety);
     options.record = arguments.value("record").has_value();
     options.start_character = -1;
     std::vector<BoutCharacter> characters;

@@ -269,9 +269,16 @@ TEST_CASE("cli: bake writes a database that db-info describes with the contract'
     CHECK(document["strikes"]["punch"]["left"] == 1);
     CHECK(document["strikes"]["punch"]["right"] == 0);
     CHECK(document["bytes"] == std::filesystem::file_size(db));
+    // The golden strikes are labelled: a front kick and a straight punch at middle height (the kick mirrored too).
+    CHECK(document["kinds"]["kick"]["front"]["left"] == 1);
+    CHECK(document["kinds"]["kick"]["front"]["right"] == 1);
+    CHECK(document["kinds"]["punch"]["straight"]["left"] == 1);
+    CHECK(document["heights"]["punch"]["middle"]["left"] == 1);
+    CHECK(document["strikes_before_mirroring"] == 2);
+    CHECK(document["labels"].size() == 3);
     const auto text = run_command(kumite_exe() + " db-info " + db.string());
     CHECK(text.status == 0);
-    CHECK_THAT(text.out, Catch::Contains("4 clips"));
+    CHECK_THAT(text.out, Catch::Contains("4 clips") && Catch::Contains("kick front middle"));
 }
 
 TEST_CASE("cli: db-info refuses flipped, truncated, empty and foreign files with a reason", "[cli][corpus]") {
@@ -360,6 +367,16 @@ TEST_CASE("cli: query refuses what it cannot answer, saying why", "[cli][corpus]
     CHECK_THAT(unknown.err, Catch::Contains("no 'headbutt' strikes") && Catch::Contains("punch"));
     const auto no_right_punch = run_command(base + "--target 0,1,1 --command punch --side right"); // the golden file has none
     CHECK(no_right_punch.status == 1);
+    const auto no_hook = run_command(base + "--target 0,1,1 --command punch --kind hook");
+    CHECK(no_hook.status == 1);
+    CHECK_THAT(no_hook.err, Catch::Contains("punch hook") && Catch::Contains("holds no such strike"));
+    CHECK(run_command(base + "--target 0,1,1 --command punch --kind roundhouse").status == 2); // not a punch's kind
+    CHECK(run_command(base + "--target 0,1,1 --command punch --height knee").status == 2);
+    const auto straight = run_command(base + "--target 0,1,0.6 --command punch --kind straight --height middle --json");
+    REQUIRE(straight.status == 0);
+    const nlohmann::json answer = nlohmann::json::parse(straight.out);
+    CHECK(answer["kind"] == "straight");
+    CHECK(answer["height"] == "middle");
     const std::filesystem::path bad = write_text("bad.csv", "0,1,1\n0,x,1\n");
     const auto bad_line = run_command(base + "--targets " + bad.string() + " --command punch");
     CHECK(bad_line.status == 1);
