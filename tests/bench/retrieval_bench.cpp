@@ -12,6 +12,7 @@
 //   - the nearest centroid by brute-force Kovar distance and by a FLANN k-d tree over the heading-aligned
 //     features (when FLANN is available), timed, and how often they pick the same cluster.
 //
+// Three orders in four also name a kind, a height or both (of a strike the database holds).
 // usage: retrieval_bench DB.kdb... [--targets N] [--seed S] [--commands punch,kick,...] [--characters-dir DIR]
 //        --commands limits the orders to those semantics (default: every strike semantics of the database,
 //        equally often); the JSON also breaks the times down by semantics.
@@ -119,6 +120,10 @@ nlohmann::json bench_database(const std::filesystem::path& path, const std::vect
         }
     }
 
+    std::map<int, std::vector<const DbClip*>> labelled_strikes; // by semantics id
+    for (const DbClip& clip : db.clips) {
+        if (db_clip_is_strike(clip)) labelled_strikes[retriever.semantics_id(db.string(clip.semantics))].push_back(&clip);
+    }
     if (strike_semantics.empty()) {
         std::cerr << "retrieval_bench: " << path.string() << " holds none of the strike semantics asked for\n";
         std::exit(1);
@@ -178,6 +183,16 @@ nlohmann::json bench_database(const std::filesystem::path& path, const std::vect
         for (int i = 0; i < targets_per_character; ++i) {
             query.semantics = strike_semantics[random.next() % strike_semantics.size()];
             query.side = static_cast<Side>(random.next() % 3);
+            // A quarter of the orders name nothing more, the others a kind, a height or both, taken from a strike of
+            // that semantics the database holds.
+            query.kind = StrikeKind::none;
+            query.height = StrikeHeight::none;
+            const std::vector<const DbClip*>& labelled = labelled_strikes[query.semantics];
+            if (const std::uint64_t ask = random.next() % 4; ask > 0 && !labelled.empty()) {
+                const DbClip& example = *labelled[random.next() % labelled.size()];
+                if (ask != 2) query.kind = example.strike_kind();
+                if (ask != 1) query.height = example.strike_height();
+            }
             query.target_world = Eigen::Vector3d(random.uniform(-0.5, 0.5) * leg, random.uniform(pelvis_y, head_y + 0.1),
                                                  random.uniform(0.4, 1.4) * leg);
             allocation_count_reset();
