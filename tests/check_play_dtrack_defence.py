@@ -20,7 +20,7 @@ TARGET_MM = (0.0, 1600.0, 60.0)  # about where the brawler's head is at rest, fa
 
 
 def hand_at(t, side):
-    """A punch every 1.2 s from t = 1.5, hands in turn: drawn back to 0.8 m from the target over 0.25 s, thrust at
+    """A punch every 1.2 s from t = 1.5 (six in a bout), hands in turn: drawn back to 0.8 m from the target over 0.25 s, thrust at
     6 m/s, held 0.05 s, back over 0.3 s."""
     guard = GUARD_MM[side]
     if t < 1.5:
@@ -50,13 +50,13 @@ def hand_at(t, side):
 def bout(kumite, database, work, defence):
     port = random.randint(20000, 60000)
     events = os.path.join(work, f"events_{defence}.jsonl")
-    command = [kumite, "play", database, "--character", "brawler", "--tracker", f"dtrack:{port}:1,2,3", "--headless", "--duration", "6",
+    command = [kumite, "play", database, "--character", "brawler", "--tracker", f"dtrack:{port}:1,2,3", "--headless", "--duration", "8.5",
                "--events", events, "--json"] + ([] if defence else ["--no-defence"])
     player = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     time.sleep(0.3)
     sender = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
     start, frame = time.time(), 0
-    while time.time() - start < 6.2:
+    while time.time() - start < 8.7:
         t = time.time() - start
         frame += 1
         left, right = hand_at(t, 0), hand_at(t, 1)
@@ -84,9 +84,12 @@ def main():
         ended_on = [e for e in on_events if e["type"] == "user_strike_end"]
         ended_off = [e for e in off_events if e["type"] == "user_strike_end"]
         defended = sum(e["outcome"] in ("blocked", "slipped") for e in ended_on)
+        # A punch that passes the fighter by ("missed": the sender aims where the head should be, and the fighter's
+        # place varies a little with real-time stepping) was no threat to defend against.
+        threats = [e for e in ended_on if e["outcome"] != "missed"]
         checks = {
             "the hands arrive with the head": on["tracker_rejected"] == 0 and on["user_strikes"]["seen"] >= 3,
-            "defence on: at least 80% blocked or slipped": len(ended_on) >= 3 and defended >= 0.8 * len(ended_on),
+            "defence on: at least 80% of the punches that would land blocked or slipped": len(threats) >= 4 and defended >= 0.8 * len(threats),
             "defence on: blocks meet the hand's path within 5 cm": all(e.get("forearm_to_path_m", 0.0) <= 0.05 for e in ended_on
                                                                       if e["outcome"] == "blocked"),
             # (the punches aim where the fighter's head is expected, so some pass it by without a defence too)
