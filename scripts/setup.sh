@@ -5,10 +5,10 @@
 #                             Xvfb and Mesa for the viewer checks)
 set -euo pipefail
 
-packages=(build-essential cmake g++ libeigen3-dev nlohmann-json3-dev catch2 python3 libopenexr-dev libflann-dev
+packages=(build-essential cmake g++ libeigen3-dev nlohmann-json3-dev libtinygltf-dev catch2 python3 libopenexr-dev libflann-dev
           qt6-base-dev qt6-qpa-plugins libqt6opengl6-dev libgl-dev libxkbcommon-dev fonts-dejavu-core)
 if [[ "${1:-}" == "--test" ]]; then
-  packages+=(blender clang-14 libfuzzer-14-dev openexr xvfb xauth libgl1-mesa-dri)
+  packages+=(blender python3-numpy clang-14 libfuzzer-14-dev openexr xvfb xauth libgl1-mesa-dri)
 fi
 
 missing=()

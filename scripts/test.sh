@@ -8,11 +8,11 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/build.sh"
 
 # The fuzz targets, when Clang and libFuzzer are there: every seed, then a minute on the BVH reader, half a
-# minute on the database opener and 20 s on the DTrack parser.
+# minute on the database opener, 20 s on the DTrack parser and half a minute on the glTF reader.
 if command -v clang++-14 >/dev/null && [[ "${KUMITE_SKIP_FUZZ:-}" != "1" ]]; then
   cmake -S "$root" -B "$root/build/fuzz" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
     -DKUMITE_BUILD_TESTS=OFF -DKUMITE_BUILD_FUZZERS=ON >/dev/null
-  cmake --build "$root/build/fuzz" --target bvh_reader_fuzz database_fuzz dtrack_fuzz -j"$(nproc)"
+  cmake --build "$root/build/fuzz" --target bvh_reader_fuzz database_fuzz dtrack_fuzz gltf_fuzz -j"$(nproc)"
   work="$(mktemp -d)"
   trap 'rm -rf "$work"' EXIT
   run_fuzzer() { # NAME SEED_FOLDER SECONDS [EXTRA...]
@@ -27,6 +27,7 @@ if command -v clang++-14 >/dev/null && [[ "${KUMITE_SKIP_FUZZ:-}" != "1" ]]; the
   run_fuzzer bvh_reader_fuzz "$root/tests/fuzz/corpus" "${KUMITE_FUZZ_SECONDS:-60}" -dict="$root/tests/fuzz/bvh.dict"
   run_fuzzer database_fuzz "$root/tests/fuzz/database_corpus" "${KUMITE_DATABASE_FUZZ_SECONDS:-30}"
   run_fuzzer dtrack_fuzz "$root/tests/fuzz/dtrack_corpus" "${KUMITE_DTRACK_FUZZ_SECONDS:-20}"
+  run_fuzzer gltf_fuzz "$root/tests/fuzz/gltf_corpus" "${KUMITE_GLTF_FUZZ_SECONDS:-30}"
 fi
 
 cd "$root/build"

@@ -4,6 +4,8 @@
 #include "character_catalog.h"
 #include "commands.h"
 
+#include "kumite/formats/gltf_reader.h"
+
 #include <iomanip>
 #include <iostream>
 
@@ -12,7 +14,8 @@ namespace kumite::cli {
 const CommandSpec& characters_spec() {
     static const CommandSpec spec{
         "characters", "[--json]",
-        "Lists the characters in data/characters: name, file, standing height and joint count.", 0, 0,
+        "Lists the characters in data/characters: name, file, standing height, joint count and body (a skinned\n"
+        "glTF mesh: NAME.glb beside NAME.bvh, or a .glb/.gltf character of its own).", 0, 0,
         {characters_dir_flag(), json_flag()}};
     return spec;
 }
@@ -23,10 +26,11 @@ int run_characters(int argc, char** argv) {
     const std::filesystem::path folder = arguments.value("characters-dir").value_or(default_characters_dir().string());
     nlohmann::json list = nlohmann::json::array();
     for (const CharacterEntry& entry : list_characters(folder)) {
-        Result<BvhFile> file = bvh_read_file(entry.file);
+        Result<BvhFile> file = read_character_file(entry.file);
         if (!file) return input_error(file.error().message);
         list.push_back({{"name", entry.name}, {"file", entry.file.string()}, {"height_m", file->height_m},
-                        {"joints", file->clip.skeleton.joint_count()}, {"unit", file->unit.name}});
+                        {"joints", file->clip.skeleton.joint_count()}, {"unit", file->unit.name},
+                        {"format", is_gltf_path(entry.file) ? "gltf" : "bvh"}, {"body", entry.body.empty() ? nlohmann::json(nullptr) : nlohmann::json(entry.body.string())}});
     }
     if (arguments.has("json")) {
         print_json({{"characters", list}});
@@ -36,7 +40,8 @@ int run_characters(int argc, char** argv) {
     for (const auto& character : list) {
         std::cout << std::left << std::setw(10) << character["name"].get<std::string>() << std::right << std::fixed
                   << std::setprecision(2) << character["height_m"].get<double>() << " m  " << std::setw(3)
-                  << character["joints"].get<int>() << " joints  " << character["file"].get<std::string>() << "\n";
+                  << character["joints"].get<int>() << " joints  " << character["file"].get<std::string>()
+                  << (character["body"].is_null() ? "" : "  body " + character["body"].get<std::string>()) << "\n";
     }
     return k_exit_ok;
 }

@@ -6,6 +6,7 @@
 #include "character_catalog.h"
 #include "default_database.h"
 #include "commands.h"
+#include "kumite/formats/gltf_reader.h"
 
 #include "kumite/core/forward_kinematics.h"
 #include "kumite/formats/atomic_file.h"
@@ -295,7 +296,17 @@ int run_play(int argc, char** argv) {
     const std::filesystem::path characters_dir = folder ? std::filesystem::path(*folder) : default_characters_dir();
     std::vector<CharacterEntry> entries = list_characters(characters_dir);
     if (entries.empty()) return input_error(characters_dir.string() + ": no characters");
-    const std::string wanted = arguments.value("character").value_or(entries[0].name);
+    std::string wanted = arguments.value("character").value_or(entries[0].name);
+    // A path to a character file of one's own joins the shipped ones under its file's stem.
+    if (std::none_of(entries.begin(), entries.end(), [&](const CharacterEntry& entry) { return entry.name == wanted; })) {
+        const std::filesystem::path path(wanted);
+        std::error_code error;
+        if ((is_gltf_path(path) || path.extension() == ".bvh") && std::filesystem::is_regular_file(path, error)) {
+            const bool stem_taken = std::any_of(entries.begin(), entries.end(), [&](const CharacterEntry& entry) { return entry.name == path.stem().string(); });
+            entries.push_back({stem_taken ? path.filename().string() : path.stem().string(), path, is_gltf_path(path) ? path : std::filesystem::path()});
+            wanted = entries.back().name;
+        }
+    }
     BoutOptions options;
     options.fighters = static_cast<int>(*fighters_count);
     options.lead_s = lead_s;
@@ -306,7 +317,7 @@ int run_play(int argc, char** argv) {
     options.start_character = -1;
     std::vector<BoutCharacter> characters;
     for (std::size_t i = 0; i < entries.size(); ++i) {
-        Result<BvhFile> file = load_character(characters_dir, entries[i].name);
+        Result<BvhFile> file = read_character_file(entries[i].file);
         if (!file) return input_error(file.error().message);
         characters.push_back({entries[i].name, std::move(*file)});
         if (entries[i].name == wanted) options.start_character = static_cast<int>(i);

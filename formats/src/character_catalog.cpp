@@ -1,5 +1,7 @@
 #include "kumite/formats/character_catalog.h"
 
+#include "kumite/formats/gltf_reader.h"
+
 #include <algorithm>
 #include <cstdlib>
 
@@ -22,22 +24,42 @@ std::filesystem::path default_characters_dir() { return locate_data_folder("KUMI
 std::vector<CharacterEntry> list_characters(const std::filesystem::path& folder) {
     std::vector<CharacterEntry> entries;
     std::error_code error;
+    std::vector<std::filesystem::path> bodies;
     for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
-        if (entry.path().extension() == ".bvh") entries.push_back({entry.path().stem().string(), entry.path()});
+        if (entry.path().extension() == ".bvh") entries.push_back({entry.path().stem().string(), entry.path(), {}});
+        else if (is_gltf_path(entry.path())) bodies.push_back(entry.path());
+    }
+    // A glTF file beside a BVH of the same name is that character's body; alone, it is a character of its own.
+    for (const std::filesystem::path& body : bodies) {
+        const auto same = std::find_if(entries.begin(), entries.end(), [&](const CharacterEntry& entry) { return entry.name == body.stem().string(); });
+        if (same != entries.end()) same->body = body;
+        else entries.push_back({body.stem().string(), body, body});
     }
     std::sort(entries.begin(), entries.end(), [](const CharacterEntry& a, const CharacterEntry& b) { return a.name < b.name; });
     return entries;
 }
 
+Result<BvhFile> read_character_file(const std::filesystem::path& path) {
+    if (!is_gltf_path(path)) return bvh_read_file(path);
+    Result<GltfCharacter> character = gltf_read_file(path);
+    if (!character) return character.error();
+    return std::move(character->character);
+}
+
 Result<BvhFile> load_character(const std::filesystem::path& folder, const std::string& name) {
     const std::vector<CharacterEntry> entries = list_characters(folder);
     for (const CharacterEntry& entry : entries) {
-        if (entry.name == name) return bvh_read_file(entry.file);
+        if (entry.name == name) return read_character_file(entry.file);
     }
+    // A path to a character file of one's own.
+    std::error_code error;
+    const std::filesystem::path path(name);
+    if ((is_gltf_path(path) || path.extension() == ".bvh") && std::filesystem::is_regular_file(path, error)) return read_character_file(path);
     std::string known;
     for (const CharacterEntry& entry : entries) known += (known.empty() ? "" : ", ") + entry.name;
     return make_error(ErrorCode::invalid, "unknown character '" + name + "' in " + folder.string() +
-                                              (known.empty() ? " (no characters there)" : " (known: " + known + ")"));
+                                              (known.empty() ? " (no characters there)" : " (known: " + known + ")") +
+                                              "; a path to a .bvh, .glb or .gltf file works too");
 }
 
 } // namespace kumite

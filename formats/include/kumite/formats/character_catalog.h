@@ -1,6 +1,6 @@
 #pragma once
-// The characters shipped in data/characters (one BVH per character whose first frame is its rest pose; the file's
-// stem is the character's name), and where the project's data folders are, for every tool that needs them.
+// The characters shipped in data/characters (one BVH per character whose first frame is its rest pose, the file's
+// stem the character's name; glTF bodies beside them), and where the project's data folders are, for every tool that needs them.
 
 #include "kumite/formats/bvh_reader.h"
 
@@ -19,12 +19,18 @@ std::filesystem::path default_characters_dir();
 
 struct CharacterEntry {
     std::string name;
-    std::filesystem::path file;
+    std::filesystem::path file; // the skeleton and rest pose: the .bvh, else the glTF file
+    std::filesystem::path body; // the skinned body (.glb/.gltf), if any
 };
-// The characters of `folder`, sorted by name.
+// The characters of `folder`, sorted by name: each .bvh (with NAME.glb or NAME.gltf beside it as its body), and each
+// glTF file without a BVH of its name (skeleton and body from the one file).
 std::vector<CharacterEntry> list_characters(const std::filesystem::path& folder);
 
-// Reads the character NAME; an unknown name is an error listing the known ones.
+// Reads a character file: BVH, or glTF (its skeleton and rest pose; gltf_reader.h).
+Result<BvhFile> read_character_file(const std::filesystem::path& path);
+
+// Reads the character NAME of `folder`, or NAME as a path to a .bvh/.glb/.gltf file; an unknown name is an error
+// listing the known ones.
 Result<BvhFile> load_character(const std::filesystem::path& folder, const std::string& name);
 
 } // namespace kumite
