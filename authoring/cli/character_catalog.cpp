@@ -1,9 +1,28 @@
 #include "character_catalog.h"
 
+#include "kumite/formats/bvh_writer.h"
+#include "kumite/formats/character_body.h"
+#include "kumite/formats/character_catalog.h"
+#include "kumite/formats/gltf_writer.h"
+
 namespace kumite::cli {
 
 FlagSpec characters_dir_flag() {
     return {"characters-dir", "DIR", "where the character files are (default data/characters)"};
+}
+
+std::filesystem::path characters_folder(const Arguments& arguments) {
+    const std::optional<std::string> folder = arguments.value("characters-dir");
+    return folder ? std::filesystem::path(*folder) : default_characters_dir();
+}
+
+Result<void> write_recording(const std::string& path, const Clip& motion, const BvhFile& character, const std::filesystem::path& folder,
+                             const std::string& character_name) {
+    if (!is_gltf_path(path)) return bvh_write_file(path, motion, character.layout, character.unit);
+    if (std::filesystem::path(path).extension() != ".glb") return make_error(ErrorCode::invalid, path + ": kumite records glTF as binary .glb, not .gltf");
+    Result<std::optional<SkinnedMesh>> body = load_character_body(folder, character_name, motion.skeleton);
+    if (!body) return body.error();
+    return gltf_write_animation_file(path, motion, *body ? &**body : nullptr, character_name);
 }
 
 } // namespace kumite::cli

@@ -10,6 +10,7 @@
 #include "strike_filmstrip.h"
 #include "kumite/formats/atomic_file.h"
 #include "kumite/formats/bvh_writer.h"
+#include "kumite/formats/gltf_reader.h"
 
 #include <algorithm>
 #include <iostream>
@@ -19,7 +20,7 @@ namespace kumite::cli {
 const CommandSpec& adapt_spec() {
     static const CommandSpec spec{
         "adapt",
-        "[DB.kdb] --character NAME --target X,Y,Z --command punch|kick [--side left|right|any] [--kind KIND] [--height H] --record OUT.bvh --report OUT.json",
+        "[DB.kdb] --character NAME --target X,Y,Z --command punch|kick [--side left|right|any] [--kind KIND] [--height H] --record OUT.bvh|OUT.glb --report OUT.json",
         "Plays the strike the retrieval picks for a character standing at the origin (facing +Z, in the guard):\n"
         "a short guard hold, then the clip blended in, decoded onto the character, its hit segment driven onto\n"
         "the target at the clip's annotated hit frame by the constraint ramp (limb IK, then CCD over the trunk when\n"
@@ -33,7 +34,7 @@ const CommandSpec& adapt_spec() {
          {"side", "left|right|any", "which side strikes (default any)"},
          kind_flag(),
          height_flag(),
-         {"record", "OUT.bvh", "the adapted motion"},
+         {"record", "OUT.bvh|OUT.glb", "the adapted motion: BVH, or glTF with the character's body"},
          {"report", "OUT.json", "contact error, hit frame, overshoot, speed at contact, joint-limit violations, bone-length error,\n"
                                 "foot drift, support foot, per-frame cost"},
          {"filmstrip", "OUT.png", "the frames around the contact from the side and the front: target, hit path, contact marked"},
@@ -61,7 +62,10 @@ int run_adapt(int argc, char** argv) {
     const std::optional<std::string> record = arguments.value("record");
     const std::optional<std::string> report_path = arguments.value("report");
     if (!target_text) return usage_error(adapt_spec(), "--target X,Y,Z is required");
-    if (!record) return usage_error(adapt_spec(), "--record OUT.bvh is required");
+    if (!record) return usage_error(adapt_spec(), "--record OUT.bvh (or OUT.glb) is required");
+    if (is_gltf_path(*record) && std::filesystem::path(*record).extension() != ".glb") {
+        return usage_error(adapt_spec(), "--record: kumite records glTF as binary .glb, not .gltf");
+    }
     Result<Eigen::Vector3d> target = parse_point(*target_text, "--target");
     if (!target) return usage_error(adapt_spec(), target.error().message);
     const Result<long long> lead = arguments.integer("lead", 0, 1000, 6);
@@ -84,7 +88,7 @@ int run_adapt(int argc, char** argv) {
     const Skeleton& skeleton = setup.character.clip.skeleton;
     const bool support_lifted = playback.support_foot_lift_m > 0.02;
 
-    const Result<void> written = bvh_write_file(*record, playback.motion, setup.character.layout, setup.character.unit);
+    const Result<void> written = write_recording(*record, playback.motion, setup.character, characters_folder(arguments), *arguments.value("character"));
     if (!written) return input_error(written.error().message);
     const DbClip& clip = db.clips[retrieved.clip];
     if (const std::optional<std::string> filmstrip = arguments.value("filmstrip")) {

@@ -29,7 +29,7 @@ const CommandSpec& play_spec() {
         "play",
         "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:HEAD[,LEFT,RIGHT]] | replay:FILE | simulate:KIND|FILE] "
         "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] "
-        "[--aim latched|predicted] [--variety N] [--no-defence] [--record OUT.bvh] [--events OUT.jsonl] [--report OUT.json]",
+        "[--aim latched|predicted] [--variety N] [--no-defence] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json]",
         "Runs the fighter at 60 Hz against the user's head and hands (a DTrack system, a replayed CSV, or a\n"
         "simulated user) and the supervisor's commands, one per line: punch [left|right] [straight|hook|uppercut]\n"
         "[low|middle|high], kick [left|right] [front|roundhouse|side] [low|middle|high], slash [left|right] [low|middle|high],\n"
@@ -57,7 +57,7 @@ const CommandSpec& play_spec() {
          {"no-defence", "", "the fighter does not block or slip the user's strikes (also the command 'defence on|off', the viewer's D key)"},
          {"aim", "latched|predicted", "strike the head where it was at the order (default), or where it will be at the contact\n"
                                       "if it keeps its course (also the command 'aim latched|predicted' and the viewer's A key)"},
-         {"record", "OUT.bvh", "the first fighter's motion on the starting character"},
+         {"record", "OUT.bvh|OUT.glb", "the first fighter's motion on the starting character (glTF: with its body)"},
          {"events", "OUT.jsonl", "one JSON object per event"},
          {"report", "OUT.json", "frames, frame times, orders, strikes, hits, misses, impacts, overshoot, joint-limit violations, tracker counts"},
          characters_dir_flag(), json_flag()}};
@@ -314,6 +314,9 @@ int run_play(int argc, char** argv) {
     options.fighter.defence.enabled = !arguments.has("no-defence");
     options.fighter.variety_recent = static_cast<int>(*variety);
     options.record = arguments.value("record").has_value();
+    if (options.record && is_gltf_path(*arguments.value("record")) && std::filesystem::path(*arguments.value("record")).extension() != ".glb") {
+        return usage_error(play_spec(), "--record: kumite records glTF as binary .glb, not .gltf");
+    }
     options.start_character = -1;
     std::vector<BoutCharacter> characters;
     for (std::size_t i = 0; i < entries.size(); ++i) {
@@ -371,7 +374,8 @@ int run_play(int argc, char** argv) {
     }
     if (const std::optional<std::string> path = arguments.value("record")) {
         const BvhFile& start = bout.starting_character_file();
-        if (Result<void> written = bvh_write_file(*path, bout.recording(), start.layout, start.unit); !written) {
+        const CharacterEntry& entry = entries[std::size_t(options.start_character)];
+        if (Result<void> written = write_recording(*path, bout.recording(), start, characters_dir, entry.body.empty() ? entry.name : entry.body.string()); !written) {
             return input_error(written.error().message);
         }
     }

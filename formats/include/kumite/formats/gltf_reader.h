@@ -10,10 +10,9 @@
 // one frame, the rest pose. The body map is detected from the joint names (Mixamo, Unreal, Blender/Rigify,
 // VRM/VRoid humanoid names among others).
 //
-// The mesh: every triangle primitive skinned by that skin, positions and normals in bind space, up to 4 joints and weights per vertex (renormalised; indices into the skeleton), the material's base
-// colour. `bind_to_rest[j]` turns a bind-space vertex into joint j's rest frame for linear-blend skinning: a
-// vertex v goes to sum_k w_k * (T_k(pose) * bind_to_rest[j_k]) * v, with T_k the joint's model transform in the
-// pose (rotation, position; identity rotations at rest), so the rest pose gives the mesh back exactly.
+// The mesh (kumite/core/skinned_mesh.h): every triangle primitive skinned by that skin, positions and normals in
+// bind space, up to 4 joints and weights per vertex (renormalised; indices into the skeleton), the material's
+// base colour, and bind_to_rest from the inverse bind matrices.
 //
 // Refused, with a message naming what and where (node, accessor, primitive index): not glTF; truncated or
 // inconsistent buffers; accessors out of their buffer views; indices or joints out of range; NaN or infinite
@@ -21,6 +20,7 @@
 // humanoid body (pelvis, chest, head, arms and legs); a standing height outside 0.3-5 m.
 
 #include "kumite/core/result.h"
+#include "kumite/core/skinned_mesh.h"
 #include "kumite/formats/bvh_reader.h"
 
 #include <Eigen/Geometry>
@@ -37,18 +37,6 @@ namespace kumite {
 inline constexpr int k_gltf_max_joints = 1024;
 inline constexpr std::size_t k_gltf_max_vertices = 4'000'000;
 inline constexpr std::size_t k_gltf_max_file_bytes = std::size_t(512) << 20;
-
-struct SkinnedMesh {
-    std::vector<Eigen::Vector3f> positions;              // [vertex] metres, the skin's bind space
-    std::vector<Eigen::Vector3f> normals;                // [vertex] unit, bind space
-    std::vector<std::array<std::uint16_t, 4>> joints;    // [vertex] skeleton joint indices
-    std::vector<std::array<float, 4>> weights;           // [vertex] sum 1
-    std::vector<std::uint32_t> triangles;                // 3 per triangle
-    std::array<float, 4> base_colour{0.8f, 0.8f, 0.8f, 1.0f}; // linear RGBA
-    std::vector<Eigen::Matrix4f> bind_to_rest;           // [joint] see above
-
-    std::size_t vertex_count() const { return positions.size(); }
-};
 
 struct GltfCharacter {
     BvhFile character; // skeleton, one rest frame, body map, a BVH layout (root: position + ZXY, joints: ZXY)
