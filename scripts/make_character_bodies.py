@@ -154,8 +154,10 @@ def body(names, parents, offsets, end_sites, scale):
     segments = [segment if len(segment) == 4 else segment + (False,) for segment in segments]
     positions, normals, joints, weights, triangles = [], [], [], [], []
     for joint, start, end, tip in segments:
-        # Nothing below the floor, and a tip (head top, finger and toe ends) ends at its End Site, not a radius past it.
-        radius = min(radius_for(names[joint], height), max(0.01, min(start[1], end[1])))
+        # Nothing below the floor: a segment lower than its radius (a foot) is lifted to stand on it, like a shoe
+        # around the bones. A tip (head top, finger and toe ends) ends at its End Site, not a radius past it.
+        radius = radius_for(names[joint], height)
+        start, end = [start[0], max(start[1], radius), start[2]], [end[0], max(end[1], radius), end[2]]
         if tip:
             direction = [end[k] - start[k] for k in range(3)]
             length = math.sqrt(sum(v * v for v in direction))
