@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
 """The player's viewer under Xvfb: `kumite play` without --headless opens the window, steps the bout in real time
 for a few seconds with two orders, saves a screenshot and exits. The report must say the viewer ran and the
-strikes happened; the screenshot must show the fighter (enough pixels of the fighter's colour) and the HUD.
-Then the wall-screen view: head-coupled from the simulated user's eyes, stereo side by side: the fighter must be
-in both halves.
+strikes happened; the screenshot must show the fighter (enough pixels of a saturated colour: the body's, or the
+capsules') and the HUD. Then the skinned body against the capsules at the same camera ({"bodies": false}): the body
+must cover far more pixels, and stay inside the capsules' outline grown by a quarter of its height (a skinning error
+shows as a spike across the screen). Then the wall-screen view: head-coupled from the simulated user's eyes, stereo
+side by side: the fighter must be in both halves.
 
 usage: check_play_viewer.py KUMITE DB.kdb OUTPUT_DIR      (exit 77: skipped when xvfb-run is not installed)
 """
@@ -47,6 +49,23 @@ def read_png(path):
     return rows
 
 
+def is_fighter(pixel):
+    """Bodies and capsules are saturated colours; the background, grid, head sphere and HUD text are greys."""
+    return max(pixel) - min(pixel) > 45
+
+
+def fighter_pixels(rows, columns=None):
+    """The fighter's pixels between the HUD's top and bottom lines: their count and bounding box."""
+    columns = columns or slice(0, len(rows[0]))
+    count, box = 0, [10 ** 6, 10 ** 6, -1, -1]
+    for y, row in enumerate(rows[80:len(rows) - 50], start=80):
+        for x, pixel in enumerate(row[columns], start=columns.start):
+            if is_fighter(pixel):
+                count += 1
+                box = [min(box[0], x), min(box[1], y), max(box[2], x), max(box[3], y)]
+    return count, box
+
+
 def main():
     kumite, database, out = sys.argv[1:4]
     if shutil.which("xvfb-run") is None:
@@ -69,13 +88,30 @@ def main():
     assert summary["frames"] >= 3.5 * 60 * 0.9, "the bout did not step at 60 Hz in the window"
     rows = read_png(shot)
     height, width = len(rows), len(rows[0])
-    # The first fighter is drawn orange (0.86, 0.55, 0.25), shaded: red clearly above green above blue.
-    fighter = sum(1 for row in rows for (r, g, b) in row if r > 120 and r > g + 30 and g > b + 25)
+    fighter, _ = fighter_pixels(rows)
     # The HUD: near-white text in the top-left corner.
     hud = sum(1 for row in rows[:60] for (r, g, b) in row[:500] if r > 200 and g > 200 and b > 200)
     print(f"screenshot {width}x{height}: {fighter} fighter pixels, {hud} HUD pixels")
     assert fighter > 2000, "the fighter is not visible in the screenshot"
     assert hud > 200, "the HUD is not visible in the screenshot"
+
+    # The skinned body against the capsules, same character, camera and still user.
+    counts = {}
+    for bodies in (True, False):
+        config, picture = os.path.join(out, f"bodies_{bodies}.json"), os.path.join(out, f"bodies_{bodies}.png")
+        open(config, "w").write(json.dumps({"bodies": bodies}))
+        command = ["xvfb-run", "-a", "-s", "-screen 0 1280x720x24", kumite, "play", database, "--character", "brawler",
+                   "--tracker", "simulate:still", "--viewer-config", config, "--duration", "2", "--screenshot", picture]
+        result = subprocess.run(command, capture_output=True, text=True, timeout=120)
+        assert result.returncode == 0, f"kumite play ({'bodies' if bodies else 'capsules'}) exited {result.returncode}: {result.stderr}"
+        counts[bodies] = fighter_pixels(read_png(picture))
+    (body, body_box), (capsules, capsule_box) = counts[True], counts[False]
+    grow = (capsule_box[3] - capsule_box[1]) // 4
+    inside = (body_box[0] >= capsule_box[0] - grow and body_box[1] >= capsule_box[1] - grow and
+              body_box[2] <= capsule_box[2] + grow and body_box[3] <= capsule_box[3] + grow)
+    print(f"skinned body: {body} pixels in {body_box}; capsules: {capsules} pixels in {capsule_box}; ratio {body / max(capsules, 1):.2f}")
+    assert body > 1.4 * capsules, "the skinned body does not cover far more pixels than the capsules"
+    assert inside, "the skinned body reaches far outside its skeleton's outline (a skinning spike)"
 
     wall, wall_shot = os.path.join(out, "wall.json"), os.path.join(out, "wall.png")
     open(wall, "w").write(json.dumps({"camera": "head_coupled", "stereo": "side_by_side", "screen": {
@@ -87,8 +123,8 @@ def main():
     assert result.returncode == 0, f"kumite play (head-coupled) exited {result.returncode}"
     rows = read_png(wall_shot)
     half = len(rows[0]) // 2
-    left = sum(1 for row in rows for (r, g, b) in row[:half] if r > 120 and r > g + 30 and g > b + 25)
-    right = sum(1 for row in rows for (r, g, b) in row[half:] if r > 120 and r > g + 30 and g > b + 25)
+    left, _ = fighter_pixels(rows, slice(0, half))
+    right, _ = fighter_pixels(rows, slice(half, len(rows[0])))
     print(f"head-coupled stereo: {left} fighter pixels in the left eye's half, {right} in the right eye's")
     assert left > 1000 and right > 1000, "the fighter is not in both eyes' views"
     return 0

@@ -6,6 +6,7 @@
 #include "character_catalog.h"
 #include "default_database.h"
 #include "commands.h"
+#include "kumite/formats/character_body.h"
 #include "kumite/formats/gltf_reader.h"
 
 #include "kumite/core/forward_kinematics.h"
@@ -322,7 +323,13 @@ int run_play(int argc, char** argv) {
     for (std::size_t i = 0; i < entries.size(); ++i) {
         Result<BvhFile> file = read_character_file(entries[i].file);
         if (!file) return input_error(file.error().message);
-        characters.push_back({entries[i].name, std::move(*file)});
+        std::shared_ptr<const SkinnedMesh> body;
+        if (!entries[i].body.empty()) {
+            Result<std::optional<SkinnedMesh>> loaded = load_character_body(characters_dir, entries[i].body.string(), file->clip.skeleton);
+            if (!loaded) return input_error(loaded.error().message);
+            if (*loaded) body = std::make_shared<const SkinnedMesh>(std::move(**loaded));
+        }
+        characters.push_back({entries[i].name, std::move(*file), std::move(body)});
         if (entries[i].name == wanted) options.start_character = static_cast<int>(i);
     }
     if (options.start_character < 0) return usage_error(play_spec(), "unknown character '" + wanted + "' (see kumite characters)");

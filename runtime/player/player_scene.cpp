@@ -1,5 +1,7 @@
 #include "player_scene.h"
 
+#include "kumite/core/forward_kinematics.h"
+
 #include <Eigen/Geometry>
 
 namespace kumite::view {
@@ -24,7 +26,7 @@ void strike_path_world(const Fighter& fighter, const MotionDatabaseView& db, std
 }
 
 void add_skeleton_capsules(Scene& scene, const Skeleton& skeleton, std::span<const Eigen::Vector3d> model_positions, float radius_m,
-                           const Color& color, int id_base) {
+                           const Color& color, int id_base, bool of_body) {
     for (int joint = 1; joint < skeleton.joint_count() && joint < int(model_positions.size()); ++joint) {
         const int parent = skeleton.parents[joint];
         if (parent < 0) continue;
@@ -34,8 +36,23 @@ void add_skeleton_capsules(Scene& scene, const Skeleton& skeleton, std::span<con
         bone.radius_m = radius_m;
         bone.color = color;
         bone.id = id_base < 0 ? -1 : id_base + joint;
+        bone.of_body = of_body;
         scene.capsules.push_back(bone);
     }
+}
+
+void add_skinned_body(Scene& scene, const std::shared_ptr<const SkinnedMesh>& mesh, const Skeleton& skeleton, const PoseView& pose) {
+    const std::size_t joints = std::size_t(skeleton.joint_count());
+    if (!mesh || mesh->bind_to_rest.size() != joints) return;
+    std::vector<Eigen::Vector3d> positions(joints);
+    std::vector<Eigen::Quaterniond> rotations(joints);
+    forward_kinematics(positions, rotations, skeleton, pose);
+    SkinnedBody body;
+    body.mesh = mesh;
+    body.skin.resize(joints);
+    skin_matrices(body.skin, *mesh, positions, rotations);
+    body.color = Color(mesh->base_colour[0], mesh->base_colour[1], mesh->base_colour[2]);
+    scene.bodies.push_back(std::move(body));
 }
 
 void player_scene_build(const Bout& bout, Scene& scene) {
@@ -46,7 +63,10 @@ void player_scene_build(const Bout& bout, Scene& scene) {
         const Skeleton& skeleton = bout.character_skeleton(fighter.character());
         const auto positions = fighter.positions();
         const Color color = k_fighter_colors[f % 4];
-        add_skeleton_capsules(scene, skeleton, positions, float(0.045 * fighter.leg_length() / 0.9), color, f * 1000);
+        const std::shared_ptr<const SkinnedMesh>& body = bout.character_body(fighter.character());
+        if (body) add_skinned_body(scene, body, skeleton, fighter.pose().view());
+        // Under a body the capsules are its skeleton overlay (and what QPainter draws).
+        add_skeleton_capsules(scene, skeleton, positions, float(0.045 * fighter.leg_length() / 0.9), color, f * 1000, bool(body));
         if (fighter.state() != FighterState::strike) continue;
         Sphere target;
         target.center = fighter.latched_target().cast<float>();

@@ -30,13 +30,13 @@ const char* const k_heights[] = {"", "low", "middle", "high"};
 
 const char* k_help =
     "1/2/3 punch any/left/right   4/5/6 kick any/left/right   J punch kind   K kick kind   H height   C next character\n"
-    "A aim latched / predicted   D defence on / off   "
+    "A aim latched / predicted   D defence on / off   B bones over the body   "
     "V orbit / head-coupled   S mono / side-by-side   F frame   Space pause   Esc quit   mouse: orbit, pan, zoom";
 
 class PlayerWindow : public QWidget {
 public:
     PlayerWindow(Bout& bout, const ViewerSettings& settings, const PlayerRunOptions& options, const std::function<void()>& after_step)
-        : m_bout(bout), m_options(options), m_after_step(after_step) {
+        : m_bout(bout), m_options(options), m_after_step(after_step), m_bodies(settings.bodies), m_skeleton_overlay(settings.skeleton_overlay) {
         setWindowTitle("kumite play");
         resize(settings.width, settings.height);
         auto* layout = new QVBoxLayout(this);
@@ -84,6 +84,7 @@ protected:
             m_view->set_stereo(m_view->stereo() == StereoMode::mono ? StereoMode::side_by_side : StereoMode::mono);
             return;
         case Qt::Key_F: m_view->frame_scene(); return;
+        case Qt::Key_B: m_skeleton_overlay = !m_skeleton_overlay; return;
         case Qt::Key_Space: m_paused = !m_paused; return;
         case Qt::Key_Escape:
         case Qt::Key_Q: close(); return;
@@ -166,7 +167,13 @@ private:
             coupling.eye_world = head->cast<float>();
             m_view->set_head_coupling(coupling);
         }
-        player_scene_build(m_bout, m_view->scene());
+        Scene& scene = m_view->scene();
+        player_scene_build(m_bout, scene);
+        scene.skeleton_overlay = m_skeleton_overlay;
+        if (!m_bodies) { // capsules only
+            scene.bodies.clear();
+            for (Capsule& capsule : scene.capsules) capsule.of_body = false;
+        }
         if (from_the_eyes) {
             const Eigen::Vector3f eye = m_view->head_coupling().eye_world;
             std::erase_if(m_view->scene().spheres, [&](const Sphere& s) { return (s.center - eye).norm() < s.radius_m + 0.1f; });
@@ -272,6 +279,7 @@ private:
     double m_next_s = 0.0, m_paused_s = 0.0, m_last_wall_s = 0.0, m_fps = 0.0;
     int m_frames_drawn = 0;
     bool m_paused = false;
+    bool m_bodies = true, m_skeleton_overlay = false;
     int m_punch_kind = 0, m_kick_kind = 0, m_height = 0; // indices into k_punch_kinds, k_kick_kinds, k_heights
     std::deque<QString> m_log;
 };

@@ -1,10 +1,13 @@
 #pragma once
-// What a viewport draws, in world metres (Y up): a floor, shaded capsules (bones), spheres (heads, targets,
-// contact points), points and polylines (hit trajectories) and wire boxes (hit-path boxes). Plain data, rebuilt
-// by the owner whenever it changes; the renderers (OpenGL, or QPainter when there is no OpenGL) only read it.
+// What a viewport draws, in world metres (Y up): a floor, skinned bodies, shaded capsules (bones), spheres (heads,
+// targets, contact points), points and polylines (hit trajectories) and wire boxes (hit-path boxes). Plain data,
+// rebuilt by the owner whenever it changes; the renderers (OpenGL, or QPainter when there is no OpenGL) only read it.
+
+#include "kumite/core/skinned_mesh.h"
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <vector>
 
 namespace kumite::view {
@@ -16,6 +19,15 @@ struct Capsule {
     float radius_m = 0.04f;
     Color color{0.8f, 0.8f, 0.8f};
     int id = -1; // returned by picking (e.g. the joint the bone ends at); -1: not pickable
+    bool of_body = false; // the skeleton of a skinned body: OpenGL draws it only as the overlay; QPainter always
+};
+
+// A body skinned on the GPU (OpenGL only): the mesh is uploaded once per SkinnedMesh and shared by every body
+// that points to it; `skin` are this frame's skin matrices (kumite/core/skinned_mesh.h), one per joint.
+struct SkinnedBody {
+    std::shared_ptr<const SkinnedMesh> mesh;
+    std::vector<Eigen::Matrix4f> skin;
+    Color color{0.8f, 0.8f, 0.8f};
 };
 
 struct Sphere {
@@ -41,12 +53,14 @@ struct WireBox {
 
 struct Scene {
     float floor_half_size_m = 3.0f; // the floor grid: a square around the origin, 0.5 m cells
+    std::vector<SkinnedBody> bodies;
+    bool skeleton_overlay = false; // OpenGL: draw the bodies' capsules (of_body) over them, seen through
     std::vector<Capsule> capsules;
     std::vector<Sphere> spheres;
     std::vector<Polyline> polylines;
     std::vector<WireBox> boxes;
 
-    void clear() { capsules.clear(), spheres.clear(), polylines.clear(), boxes.clear(); }
+    void clear() { bodies.clear(), capsules.clear(), spheres.clear(), polylines.clear(), boxes.clear(); }
 };
 
 } // namespace kumite::view

@@ -99,6 +99,7 @@ bool SceneGlRenderer::initialize(QString& error) {
         error = m_lit.log() + m_flat.log();
         return false;
     }
+    if (!m_bodies.initialize(error)) return false;
     build_mesh(m_sphere, unit_sphere(12, 20));
     build_mesh(m_cylinder, unit_cylinder(20));
     m_lines_vao.create();
@@ -133,6 +134,7 @@ void SceneGlRenderer::release() {
     for (Mesh* mesh : {&m_sphere, &m_cylinder}) mesh->vao.destroy(), mesh->buffer.destroy();
     m_lines_vao.destroy();
     m_lines.destroy();
+    m_bodies.release();
     m_ready = false;
 }
 
@@ -142,6 +144,20 @@ void SceneGlRenderer::draw_solid(const Mesh& mesh, const Eigen::Matrix4f& model,
     m_lit.setUniformValue("opacity", opacity);
     const_cast<QOpenGLVertexArrayObject&>(mesh.vao).bind();
     glDrawArrays(GL_TRIANGLES, 0, mesh.vertices);
+}
+
+void SceneGlRenderer::draw_capsule(const Capsule& c) {
+    const Eigen::Vector3f axis = c.b - c.a;
+    const float length = axis.norm();
+    if (length > 1e-6f) {
+        Eigen::Matrix4f model = Eigen::Matrix4f::Identity();
+        const Eigen::Matrix3f rotation = Eigen::Quaternionf::FromTwoVectors(Eigen::Vector3f::UnitY(), axis / length).toRotationMatrix();
+        model.topLeftCorner<3, 3>() = rotation * Eigen::Vector3f(c.radius_m, length, c.radius_m).asDiagonal();
+        model.block<3, 1>(0, 3) = c.a;
+        draw_solid(m_cylinder, model, c.color, 1.0f);
+    }
+    draw_solid(m_sphere, sphere_model(c.a, c.radius_m), c.color, 1.0f);
+    draw_solid(m_sphere, sphere_model(c.b, c.radius_m), c.color, 1.0f);
 }
 
 void SceneGlRenderer::render(const Scene& scene, const ViewProjection& vp, const QRect& viewport) {
@@ -164,22 +180,14 @@ void SceneGlRenderer::render(const Scene& scene, const ViewProjection& vp, const
     m_lit.setUniformValue("view", QMatrix4x4(m_view.data()).transposed());
     m_lit.setUniformValue("view_projection", view_projection);
     for (const Capsule& c : scene.capsules) {
-        const Eigen::Vector3f axis = c.b - c.a;
-        const float length = axis.norm();
-        if (length > 1e-6f) {
-            Eigen::Matrix4f model = Eigen::Matrix4f::Identity();
-            const Eigen::Matrix3f rotation = Eigen::Quaternionf::FromTwoVectors(Eigen::Vector3f::UnitY(), axis / length).toRotationMatrix();
-            model.topLeftCorner<3, 3>() = rotation * Eigen::Vector3f(c.radius_m, length, c.radius_m).asDiagonal();
-            model.block<3, 1>(0, 3) = c.a;
-            draw_solid(m_cylinder, model, c.color, 1.0f);
-        }
-        draw_solid(m_sphere, sphere_model(c.a, c.radius_m), c.color, 1.0f);
-        draw_solid(m_sphere, sphere_model(c.b, c.radius_m), c.color, 1.0f);
+        if (!c.of_body) draw_capsule(c);
     }
     for (const Sphere& s : scene.spheres) {
         if (s.opacity < 1.0f) continue;
         draw_solid(m_sphere, sphere_model(s.center, s.radius_m), s.color, 1.0f);
     }
+
+    m_bodies.draw(scene.bodies, m_view, m_view_projection);
 
     // Lines: grid, polylines, boxes; dots separately.
     m_line_vertices.clear();
@@ -223,6 +231,17 @@ void SceneGlRenderer::render(const Scene& scene, const ViewProjection& vp, const
         draw_solid(m_sphere, sphere_model(s.center, s.radius_m), s.color, s.opacity);
     }
     glDepthMask(GL_TRUE);
+    // The bodies' skeletons, seen through them.
+    if (scene.skeleton_overlay && !scene.bodies.empty()) {
+        glEnable(GL_SCISSOR_TEST);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        glDisable(GL_SCISSOR_TEST);
+        for (Capsule c : scene.capsules) {
+            if (!c.of_body) continue;
+            c.radius_m *= 0.45f; // thin bones over the body
+            draw_capsule(c);
+        }
+    }
     // Leave the state QPainter expects.
     glBindVertexArray(0);
     m_lit.release();

@@ -80,6 +80,9 @@ protected:
 private:
     SceneView* m_owner;
     SceneGlRenderer m_renderer;
+
+public:
+    int body_mesh_uploads() const { return m_renderer.body_mesh_uploads(); }
 };
 
 SceneView::SceneView(QWidget* parent) : QWidget(parent) {
@@ -105,7 +108,11 @@ void SceneView::set_stereo(StereoMode mode) {
 bool SceneView::quad_buffer_available() const { return false; }
 
 QString SceneView::renderer_description() const {
-    if (m_gl) return m_gl->description.isEmpty() ? QString("OpenGL") : m_gl->description;
+    if (m_gl) {
+        const QString base = m_gl->description.isEmpty() ? QString("OpenGL") : m_gl->description;
+        const int uploads = m_gl->body_mesh_uploads();
+        return uploads == 0 ? base : base + QString(", %1 body mesh%2 on the GPU").arg(uploads).arg(uploads == 1 ? "" : "es");
+    }
     return "QPainter (no OpenGL on this display)";
 }
 

@@ -90,6 +90,11 @@ Result<ViewerSettings> viewer_settings_parse(std::string_view text, std::string_
         settings.width = window[0].get<int>();
         settings.height = window[1].get<int>();
     }
+    for (auto [key, flag] : {std::pair<const char*, bool*>{"bodies", &settings.bodies}, {"skeleton_overlay", &settings.skeleton_overlay}}) {
+        if (!json.contains(key)) continue;
+        if (!json[key].is_boolean()) return make_error(ErrorCode::invalid, source + ": \"" + key + "\" must be true or false");
+        *flag = json[key].get<bool>();
+    }
     if (json.contains("fullscreen")) {
         if (!json["fullscreen"].is_boolean()) return make_error(ErrorCode::invalid, source + ": \"fullscreen\" must be true or false");
         settings.fullscreen = json["fullscreen"].get<bool>();

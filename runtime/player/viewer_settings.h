@@ -2,7 +2,7 @@
 // The viewer's settings file (JSON, every key optional; documented in runtime/player/README.md):
 //   {"camera": "orbit" | "head_coupled", "stereo": "mono" | "side_by_side" | "quad_buffer",
 //    "eye_separation_m": 0.064, "screen": {"lower_left": [x,y,z], "lower_right": [x,y,z], "upper_left": [x,y,z]},
-//    "window": [width, height], "fullscreen": false}
+//    "window": [width, height], "fullscreen": false, "bodies": true, "skeleton_overlay": false}
 // The screen corners are measured in world metres (the room after the tracker's room-to-world transform).
 
 #include "scene_view.h"
@@ -19,6 +19,8 @@ struct ViewerSettings {
     HeadCoupling coupling;
     int width = 1280, height = 720;
     bool fullscreen = false;
+    bool bodies = true;            // skinned bodies where characters have them (false: capsules only)
+    bool skeleton_overlay = false; // the bones drawn over the bodies (the B key)
 };
 
 Result<ViewerSettings> viewer_settings_parse(std::string_view text, std::string_view source_name);

@@ -7,6 +7,7 @@ namespace kumite {
 struct Bout::Character {
     std::string name;
     BvhFile file;
+    std::shared_ptr<const SkinnedMesh> body;
     RestAnatomy anatomy;
     std::unique_ptr<CharacterRig> rig;
 };
@@ -28,6 +29,10 @@ Result<std::unique_ptr<Bout>> Bout::create(const MotionDatabaseView& database, s
         auto character = std::make_unique<Character>();
         character->name = std::move(given.name);
         character->file = std::move(given.file);
+        character->body = std::move(given.body);
+        if (character->body && character->body->bind_to_rest.size() != std::size_t(character->file.clip.skeleton.joint_count())) {
+            return make_error(ErrorCode::invalid, "character " + character->name + ": its body is bound to another skeleton");
+        }
         Result<RestAnatomy> anatomy = rest_anatomy_build(character->file.clip, character->file.body_map);
         if (!anatomy) return make_error(anatomy.error().code, "character " + character->name + ": " + anatomy.error().message);
         character->anatomy = std::move(*anatomy);
@@ -65,6 +70,10 @@ const std::string& Bout::character_name(int fighter_character) const {
 
 const Skeleton& Bout::character_skeleton(int fighter_character) const {
     return m_characters[(m_options.start_character + fighter_character) % m_characters.size()]->file.clip.skeleton;
+}
+
+const std::shared_ptr<const SkinnedMesh>& Bout::character_body(int fighter_character) const {
+    return m_characters[(m_options.start_character + fighter_character) % m_characters.size()]->body;
 }
 
 const BvhFile& Bout::starting_character_file() const { return m_characters[m_options.start_character]->file; }

@@ -5,6 +5,7 @@
 // log or show, and can record the first fighter on the starting character. After construction a step allocates
 // nothing unless recording (the recording grows).
 
+#include "kumite/core/skinned_mesh.h"
 #include "kumite/formats/bvh_reader.h"
 #include "kumite/runtime/value_histogram.h"
 #include "kumite/runtime/fighter.h"
@@ -22,6 +23,7 @@ namespace kumite {
 struct BoutCharacter {
     std::string name;
     BvhFile file; // its first frame is the rest pose
+    std::shared_ptr<const SkinnedMesh> body; // its skinned body on file's skeleton (character_body.h), or null
 };
 
 struct BoutOptions {
@@ -97,6 +99,8 @@ public:
     // Fighters index characters from the starting one on; this names and shapes them in that order.
     const std::string& character_name(int fighter_character) const;
     const Skeleton& character_skeleton(int fighter_character) const;
+    // Its body (prepared once when the bout is created; shared by every fighter on it), or null.
+    const std::shared_ptr<const SkinnedMesh>& character_body(int fighter_character) const;
     int character_count() const { return static_cast<int>(m_characters.size()); }
     const MotionDatabaseView& database() const { return m_db; }
     const Retriever& retriever() const { return *m_retriever; }

@@ -1,0 +1,40 @@
+#pragma once
+// Skinned bodies drawn with OpenGL 3.3 core: linear-blend skinning in the vertex shader, the skin matrices in a
+// float texture (4 texels a joint, one row per joint: any joint count), lit like the capsules. Each SkinnedMesh
+// is uploaded once (vertex and index buffers kept while the mesh is alive) and shared by every body drawn with it;
+// per body and frame only its skin matrices go to the GPU. Lives inside a current context, like SceneGlRenderer.
+
+#include "scene.h"
+
+#include <QOpenGLBuffer>
+#include <QOpenGLExtraFunctions>
+#include <QOpenGLShaderProgram>
+#include <QOpenGLVertexArrayObject>
+
+#include <memory>
+#include <vector>
+
+namespace kumite::view {
+
+class BodyGlRenderer : protected QOpenGLExtraFunctions {
+public:
+    BodyGlRenderer();
+    ~BodyGlRenderer();
+    bool initialize(QString& error); // in the current context
+    // Depth test on, blending as the caller set it.
+    void draw(const std::vector<SkinnedBody>& bodies, const Eigen::Matrix4f& view, const Eigen::Matrix4f& view_projection);
+    void release(); // before the context goes away
+    int mesh_uploads() const { return m_uploads; } // meshes uploaded so far (one per SkinnedMesh drawn)
+
+private:
+    struct Uploaded;
+    Uploaded& uploaded(const std::shared_ptr<const SkinnedMesh>& mesh);
+
+    QOpenGLShaderProgram m_program;
+    GLuint m_skin_texture = 0;
+    std::vector<std::unique_ptr<Uploaded>> m_meshes;
+    int m_uploads = 0;
+    bool m_ready = false;
+};
+
+} // namespace kumite::view
