@@ -33,7 +33,7 @@ bool is_separator(char c) { return c == '_' || c == '.' || c == ' ' || c == '-' 
 std::string_view strip_known_prefix(std::string_view name) {
     if (const size_t colon = name.rfind(':'); colon != std::string_view::npos) name.remove_prefix(colon + 1);
     const std::string lower = lowercase(name);
-    for (std::string_view prefix : {"cc_base_", "joint_", "bip01_", "bip01 ", "bip001 ", "mixamorig_", "def-"}) {
+    for (std::string_view prefix : {"cc_base_", "joint_", "bip01_", "bip01 ", "bip001 ", "mixamorig_", "def-", "j_bip_"}) {
         if (lower.starts_with(prefix) && lower.size() > prefix.size()) return name.substr(prefix.size());
     }
     // MotionBuilder / HumanIK: "Character1_Hips".
@@ -96,14 +96,20 @@ JointNameParts split_joint_name(std::string_view full_name) {
     if (!current.empty()) tokens.push_back(current);
 
     JointNameParts parts;
-    std::string base;
-    for (const std::string& token : tokens) {
-        const Side side = side_of_token(lowercase(token));
+    std::string base, numbers;
+    for (std::size_t t = 0; t < tokens.size(); ++t) {
+        const std::string token = lowercase(tokens[t]);
+        const Side side = side_of_token(token);
         if (side != Side::none && parts.side == Side::none && tokens.size() > 1) {
             parts.side = side;
             continue;
         }
-        base += lowercase(token);
+        if (token == "c" && tokens.size() > 1) continue; // VRM's centre mark: J_Bip_C_Head
+        if (t > 0 && std::all_of(token.begin(), token.end(), [](unsigned char c) { return std::isdigit(c); })) {
+            numbers += token; // a trailing number: spine_01, or Rigify's DEF-forearm.L.001
+            continue;
+        }
+        base += token;
     }
     if (parts.side == Side::none) {
         if (base.starts_with("left") && base.size() > 4) {
@@ -124,6 +130,9 @@ JointNameParts split_joint_name(std::string_view full_name) {
             }
         }
     }
+    // A numbered segment of a side's limb bone (Rigify's DEF-forearm.L.001) is a helper, like a twist bone;
+    // elsewhere the number stays part of the name (spine_01).
+    if (!numbers.empty()) base += parts.side != Side::none ? "segment" : numbers;
     parts.base = base;
     return parts;
 }
@@ -137,7 +146,7 @@ struct NamedJoint {
 
 bool is_helper_bone(const std::string& base) {
     return base.find("twist") != std::string::npos || base.find("share") != std::string::npos ||
-           base.find("roll") != std::string::npos;
+           base.find("roll") != std::string::npos || base.ends_with("segment");
 }
 
 // The first joint (closest to the root) of this side whose base name is one of `bases`, trying them in order.
@@ -204,6 +213,27 @@ void detect_limbs(BodyMap& map, const Skeleton& skeleton, const std::vector<Name
     }
 }
 
+// Without a joint named head (Rigify's DEF-spine.006): from the chest up the trunk, each step to the unsided child
+// highest above its parent at rest, while one rises; the last is the head, when there are at least two (a neck).
+int top_of_trunk(const Skeleton& skeleton, const std::vector<NamedJoint>& named, int chest) {
+    int at = chest, steps = 0;
+    for (;;) {
+        int next = -1;
+        double best_rise = 0.0;
+        for (int child : skeleton.children(at)) {
+            const double rise = skeleton.rest_offsets[child].y();
+            if (named[child].side == Side::none && rise > 0.5 * skeleton.rest_offsets[child].norm() && rise > best_rise) {
+                next = child;
+                best_rise = rise;
+            }
+        }
+        if (next < 0) break;
+        at = next;
+        ++steps;
+    }
+    return steps >= 2 ? at : -1;
+}
+
 int lca_of_present(const Skeleton& skeleton, int a, int b) {
     if (a < 0) return b;
     if (b < 0) return a;
@@ -236,6 +266,7 @@ BodyMap detect_body_map(const Skeleton& skeleton) {
 
     int head = find_by_base(named, Side::none, {"head"});
     if (head >= 0 && chest >= 0 && !skeleton.is_ancestor(chest, head)) head = -1;
+    if (head < 0 && chest >= 0) head = top_of_trunk(skeleton, named, chest);
 
     const int pelvis = lca_of_present(skeleton, lca_of_present(skeleton, map.joint(BodyPart::thigh_l),
                                                                map.joint(BodyPart::thigh_r)), chest);

@@ -192,3 +192,69 @@ TEST_CASE("body_map: 3ds Max Biped, Unreal and Blender/Rigify names", "[core]") 
     CHECK(rigify_map.at("upper_arm_r") == "upper_arm.R");
     CHECK(rigify_map.at("shin_l") == "shin.L");
 }
+
+TEST_CASE("body_map: VRM / VRoid humanoid names", "[core]") {
+    const Skeleton skeleton = skeleton_from({{"Root", nullptr}, {"J_Bip_C_Hips", "Root"}, {"J_Bip_C_Spine", "J_Bip_C_Hips"},
+        {"J_Bip_C_Chest", "J_Bip_C_Spine"}, {"J_Bip_C_UpperChest", "J_Bip_C_Chest"}, {"J_Bip_C_Neck", "J_Bip_C_UpperChest"},
+        {"J_Bip_C_Head", "J_Bip_C_Neck"}, {"J_Bip_L_Shoulder", "J_Bip_C_UpperChest"}, {"J_Bip_L_UpperArm", "J_Bip_L_Shoulder"},
+        {"J_Bip_L_LowerArm", "J_Bip_L_UpperArm"}, {"J_Bip_L_Hand", "J_Bip_L_LowerArm"}, {"J_Bip_R_Shoulder", "J_Bip_C_UpperChest"},
+        {"J_Bip_R_UpperArm", "J_Bip_R_Shoulder"}, {"J_Bip_R_LowerArm", "J_Bip_R_UpperArm"}, {"J_Bip_R_Hand", "J_Bip_R_LowerArm"},
+        {"J_Bip_L_UpperLeg", "J_Bip_C_Hips"}, {"J_Bip_L_LowerLeg", "J_Bip_L_UpperLeg"}, {"J_Bip_L_Foot", "J_Bip_L_LowerLeg"},
+        {"J_Bip_L_ToeBase", "J_Bip_L_Foot"}, {"J_Bip_R_UpperLeg", "J_Bip_C_Hips"}, {"J_Bip_R_LowerLeg", "J_Bip_R_UpperLeg"},
+        {"J_Bip_R_Foot", "J_Bip_R_LowerLeg"}, {"J_Bip_R_ToeBase", "J_Bip_R_Foot"}});
+    const auto map = named_map(skeleton);
+    CHECK(map.size() == 21);
+    CHECK(map.at("pelvis") == "J_Bip_C_Hips");
+    CHECK(map.at("chest") == "J_Bip_C_UpperChest");
+    CHECK(map.at("head") == "J_Bip_C_Head");
+    CHECK(map.at("neck") == "J_Bip_C_Neck");
+    CHECK(map.at("forearm_l") == "J_Bip_L_LowerArm");
+    CHECK(map.at("toe_r") == "J_Bip_R_ToeBase");
+}
+
+TEST_CASE("body_map: Rigify's deform bones, numbered segments and a head named spine.006", "[core]") {
+    // Offsets matter here: the head is found as the top of the trunk.
+    Skeleton skeleton;
+    auto add = [&](const std::string& name, const std::string& parent, Eigen::Vector3d offset) {
+        skeleton.names.push_back(name);
+        skeleton.parents.push_back(parent.empty() ? -1 : *skeleton.find(parent));
+        skeleton.rest_offsets.push_back(offset);
+    };
+    add("DEF-spine", "", {0, 1.0, 0});
+    add("DEF-spine.001", "DEF-spine", {0, 0.1, 0});
+    add("DEF-spine.002", "DEF-spine.001", {0, 0.1, 0});
+    add("DEF-spine.003", "DEF-spine.002", {0, 0.12, 0});
+    add("DEF-spine.004", "DEF-spine.003", {0, 0.15, 0});
+    add("DEF-spine.005", "DEF-spine.004", {0, 0.05, 0.01});
+    add("DEF-spine.006", "DEF-spine.005", {0, 0.05, 0.01});
+    add("DEF-jaw", "DEF-spine.006", {0, -0.05, 0.08});
+    for (const char* side : {"L", "R"}) {
+        const double x = side[0] == 'L' ? 1.0 : -1.0;
+        const std::string s = side;
+        auto n = [&](const char* base) { return std::string("DEF-") + base + "." + s; };
+        add(n("shoulder"), "DEF-spine.003", {0.02 * x, 0.1, 0});
+        add(n("upper_arm"), n("shoulder"), {0.15 * x, 0, 0});
+        add((n("upper_arm") + ".001"), n("upper_arm"), {0.14 * x, 0, 0});
+        add(n("forearm"), (n("upper_arm") + ".001"), {0.14 * x, 0, 0});
+        add((n("forearm") + ".001"), n("forearm"), {0.13 * x, 0, 0});
+        add(n("hand"), (n("forearm") + ".001"), {0.13 * x, 0, 0});
+        add(n("thigh"), "DEF-spine", {0.1 * x, 0, 0});
+        add((n("thigh") + ".001"), n("thigh"), {0, -0.22, 0});
+        add(n("shin"), (n("thigh") + ".001"), {0, -0.22, 0});
+        add((n("shin") + ".001"), n("shin"), {0, -0.21, 0});
+        add(n("foot"), (n("shin") + ".001"), {0, -0.21, 0});
+        add(n("toe"), n("foot"), {0, -0.05, 0.12});
+    }
+    const auto map = named_map(skeleton);
+    CHECK(map.at("pelvis") == "DEF-spine");
+    CHECK(map.at("chest") == "DEF-spine.003");
+    CHECK(map.at("head") == "DEF-spine.006");
+    CHECK(map.at("upper_arm_l") == "DEF-upper_arm.L");
+    CHECK(map.at("forearm_l") == "DEF-forearm.L");
+    CHECK(map.at("hand_r") == "DEF-hand.R");
+    CHECK(map.at("thigh_r") == "DEF-thigh.R");
+    CHECK(map.at("shin_l") == "DEF-shin.L");
+    CHECK(map.at("toe_l") == "DEF-toe.L");
+    CHECK(split_joint_name("DEF-forearm.L.001").base == "forearmsegment");
+    CHECK(split_joint_name("spine_01").base == "spine01");
+}
