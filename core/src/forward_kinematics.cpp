@@ -39,9 +39,10 @@ void end_site_positions(std::span<Eigen::Vector3d> end_site_model_positions, con
     }
 }
 
-double bone_length_error(const Skeleton& skeleton, std::span<const Eigen::Vector3d> positions) {
+double bone_length_error(const Skeleton& skeleton, std::span<const Eigen::Vector3d> positions, int pelvis) {
     double worst = 0.0;
     for (int joint = 1; joint < skeleton.joint_count(); ++joint) {
+        if (pelvis >= 0 && skeleton.is_ancestor(joint, pelvis)) continue;
         const double length = (positions[joint] - positions[skeleton.parents[joint]]).norm();
         worst = std::max(worst, std::abs(length - skeleton.rest_offsets[joint].norm()));
     }

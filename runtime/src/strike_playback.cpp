@@ -69,7 +69,7 @@ StrikePlayback strike_playback_run(const CharacterRig& rig, const MotionDatabase
         playback.joint_violations.push_back(frame.joint_violations);
         playback.overshoot_m = std::max(playback.overshoot_m, frame.past_target_m);
         playback.joint_limit_violations += joint_violation_count(frame.joint_violations);
-        playback.bone_length_error_m = std::max(playback.bone_length_error_m, bone_length_error(skeleton, adapter.positions()));
+        playback.bone_length_error_m = std::max(playback.bone_length_error_m, bone_length_error(skeleton, adapter.positions(), anatomy.body_map.joint(BodyPart::pelvis)));
         for (int foot = 0; foot < 2; ++foot) {
             if (!adapter.support_feet()[foot]) continue;
             const Eigen::Vector3d ankle = adapter.positions()[anatomy.limbs[int(Limb::leg_l) + foot].extremity];

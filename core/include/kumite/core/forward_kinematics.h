@@ -19,7 +19,8 @@ void end_site_positions(std::span<Eigen::Vector3d> end_site_model_positions, con
                         std::span<const Eigen::Quaterniond> model_rotations);
 
 // The largest | |child - parent| - rest length | over the bones of a pose whose joints use their rest offsets
-// (metres): how far a pose stretches or shrinks its skeleton.
-double bone_length_error(const Skeleton& skeleton, std::span<const Eigen::Vector3d> model_positions);
+// (metres): how far a pose stretches or shrinks its skeleton. With `pelvis`, the links from the joints above it
+// (a Root on the floor, Bandai's joint_Root) to it are left out: they carry the root motion, not a bone.
+double bone_length_error(const Skeleton& skeleton, std::span<const Eigen::Vector3d> model_positions, int pelvis = -1);
 
 } // namespace kumite
