@@ -18,7 +18,11 @@ std::filesystem::path characters_folder(const Arguments& arguments) {
 
 Result<void> write_recording(const std::string& path, const Clip& motion, const BvhFile& character, const std::filesystem::path& folder,
                              const std::string& character_name) {
-    if (!is_gltf_path(path)) return bvh_write_file(path, motion, character.layout, character.unit);
+    if (!is_gltf_path(path)) {
+        // A pelvis moved under a Root joint needs position channels the character's own layout may not have.
+        const BvhLayout layout = motion.has_local_translations() ? bvh_default_layout(motion) : character.layout;
+        return bvh_write_file(path, motion, layout, character.unit);
+    }
     if (std::filesystem::path(path).extension() != ".glb") return make_error(ErrorCode::invalid, path + ": kumite records glTF as binary .glb, not .gltf");
     Result<std::optional<SkinnedMesh>> body = load_character_body(folder, character_name, motion.skeleton);
     if (!body) return body.error();

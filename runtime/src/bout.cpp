@@ -217,8 +217,7 @@ void Bout::step(double t_s) {
     }
     if (m_record_decoder) {
         m_record_decoder->decode(m_record_pose, m_fighters[0]->mir());
-        m_recording.root_translations.push_back(m_record_pose.root_translation);
-        m_recording.local_rotations.insert(m_recording.local_rotations.end(), m_record_pose.local_rotations.begin(), m_record_pose.local_rotations.end());
+        clip_append_pose(m_recording, m_record_pose.view());
     }
     ++m_counters.frames;
     const double elapsed_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started).count();

@@ -10,8 +10,7 @@ namespace {
 
 void append_pose(StrikePlayback& playback, const Pose& pose) {
     Clip& motion = playback.motion;
-    motion.root_translations.push_back(pose.root_translation);
-    motion.local_rotations.insert(motion.local_rotations.end(), pose.local_rotations.begin(), pose.local_rotations.end());
+    clip_append_pose(motion, pose.view());
     const int joints = motion.skeleton.joint_count();
     std::vector<Eigen::Quaterniond> rotations(joints);
     const std::size_t first = playback.model_positions.size();

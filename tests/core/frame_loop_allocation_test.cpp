@@ -93,7 +93,7 @@ TEST_CASE("bout: a step allocates nothing, with a dodging simulated user, orders
     const kumite::test::StandingCharacter giant("giant", database.view());
     Result<std::unique_ptr<HeadTracker>> tracker = HeadTracker::open("simulate:dodge", DtrackConfig{}, 5);
     REQUIRE(tracker);
-    Result<std::unique_ptr<Bout>> bout = Bout::create(database.view(), {{"brawler", brawler.file}, {"giant", giant.file}}, std::move(*tracker), BoutOptions{});
+    Result<std::unique_ptr<Bout>> bout = Bout::create(database.view(), {{"brawler", brawler.file, nullptr}, {"giant", giant.file, nullptr}}, std::move(*tracker), BoutOptions{});
     REQUIRE(bout);
     (*bout)->step(0.0);
     std::size_t events = 0;
@@ -115,7 +115,7 @@ TEST_CASE("bout: a step allocates nothing while a punching user's strikes are de
     const kumite::test::StandingCharacter brawler("brawler", database.view());
     Result<std::unique_ptr<HeadTracker>> tracker = HeadTracker::open("simulate:punch", DtrackConfig{}, 5);
     REQUIRE(tracker);
-    Result<std::unique_ptr<Bout>> bout = Bout::create(database.view(), {{"brawler", brawler.file}}, std::move(*tracker), BoutOptions{});
+    Result<std::unique_ptr<Bout>> bout = Bout::create(database.view(), {{"brawler", brawler.file, nullptr}}, std::move(*tracker), BoutOptions{});
     REQUIRE(bout);
     (*bout)->step(0.0);
     kumite::test::AllocationScope scope;

@@ -44,6 +44,10 @@ struct Clip {
     Pose rest_pose() const;
 };
 
+// Appends a frame. A pose with local translations (the pelvis below a Root joint, moved by the decoder) gives the
+// clip local translations; frames appended before without them get the rest offsets.
+void clip_append_pose(Clip& clip, const PoseView& pose);
+
 // Writes the pose at time_s (clamped to the clip): slerp between the neighbouring frames' rotations, lerp
 // between translations. `pose` is resized once to the skeleton and reused across calls.
 void clip_sample(Pose& pose, const Clip& clip, double time_s);
