@@ -6,6 +6,7 @@
 #include "kumite/core/retarget_clip.h"
 #include "kumite/formats/atomic_file.h"
 #include "kumite/formats/bvh_writer.h"
+#include "kumite/formats/gltf_reader.h"
 
 #include <iostream>
 
@@ -14,13 +15,13 @@ namespace kumite::cli {
 const CommandSpec& retarget_spec() {
     static const CommandSpec spec{
         "retarget",
-        "IN.bvh --character NAME -o OUT.bvh [--report OUT.json]",
+        "IN.bvh --character NAME|FILE.glb -o OUT.bvh|OUT.glb [--report OUT.json]",
         "Encodes a capture in the morphology-independent representation and decodes it onto a character of\n"
         "data/characters: bone lengths are the character's, limbs keep their extension, planted feet stay planted.\n"
         "The output BVH has the character's hierarchy, channels and unit; the report measures the result.",
         1, 1,
         {{"character", "NAME", "target character (see kumite characters)"},
-         {"output", "OUT.bvh", "where to write the retargeted capture (also -o)"},
+         {"output", "OUT.bvh|OUT.glb", "where to write the retargeted capture (also -o); .glb: with the character's body"},
          {"report", "OUT.json", "write the quality report as JSON"},
          unit_flag(), strict_flag(), mocap_root_flag(), body_map_flag(), characters_dir_flag(), json_flag()}};
     return spec;
@@ -49,7 +50,10 @@ int run_retarget(int argc, char** argv) {
     const std::optional<std::string> character_name = arguments.value("character");
     const std::optional<std::string> output = arguments.value("output");
     if (!character_name) return usage_error(retarget_spec(), "--character NAME is required");
-    if (!output) return usage_error(retarget_spec(), "-o OUT.bvh is required");
+    if (!output) return usage_error(retarget_spec(), "-o OUT.bvh (or OUT.glb) is required");
+    if (is_gltf_path(*output) && std::filesystem::path(*output).extension() != ".glb") {
+        return usage_error(retarget_spec(), "-o: kumite writes glTF as binary .glb, not .gltf");
+    }
     Result<CaptureOptions> options = capture_options_from(arguments);
     if (!options) return usage_error(retarget_spec(), options.error().message);
 
@@ -66,9 +70,15 @@ int run_retarget(int argc, char** argv) {
 
     RetargetReport report;
     const Clip retargeted = retarget_clip(report, source->clip, *source_anatomy, character->clip.skeleton, *target_anatomy);
-    const BvhLayout layout = retargeted.has_local_translations() ? bvh_default_layout(retargeted) : character->layout;
-    if (Result<void> written = bvh_write_file(*output, retargeted, layout, character->unit); !written) {
-        return input_error(written.error().message);
+    if (is_gltf_path(*output)) { // the motion on the character's body
+        if (Result<void> written = write_recording(*output, retargeted, *character, characters, *character_name); !written) {
+            return input_error(written.error().message);
+        }
+    } else {
+        const BvhLayout layout = retargeted.has_local_translations() ? bvh_default_layout(retargeted) : character->layout;
+        if (Result<void> written = bvh_write_file(*output, retargeted, layout, character->unit); !written) {
+            return input_error(written.error().message);
+        }
     }
     const nlohmann::json document = report_json(report, *character_name, *output);
     if (const std::optional<std::string> report_path = arguments.value("report")) {
