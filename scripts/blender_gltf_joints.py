@@ -8,15 +8,11 @@ JSON; with --frames, also every joint's posed position at those frames of the an
 recording at 30 Hz imported at --fps 30 has frame k of the animation at Blender frame k + the action's start.
 """
 import json
+import os
 import sys
 
-try:
-    import numpy
-except ImportError:  # Blender's Python finds another installation first (a pyenv on PATH): use Debian's numpy
-    sys.path.append("/usr/lib/python3/dist-packages")
-    import numpy
-
-numpy.bool = bool  # Debian's numpy 1.24 dropped the alias Blender 3.4's glTF importer still uses
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import blender_env  # noqa: E402,F401  numpy for the glTF add-on
 
 import bpy  # noqa: E402
 

@@ -33,7 +33,7 @@ def glb_frame_rate(path):
 
 
 def blender_import(glb, out_json, frames=()):
-    command = ["blender", "-b", "--factory-startup", "--python", JOINTS, "--", glb, out_json, "--fps", str(glb_frame_rate(glb))]
+    command = ["blender", "-b", "--factory-startup", "--python-exit-code", "1", "--python", JOINTS, "--", glb, out_json, "--fps", str(glb_frame_rate(glb))]
     if frames:
         command += ["--frames", ",".join(str(f) for f in frames)]
     subprocess.run(command, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
