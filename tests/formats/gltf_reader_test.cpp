@@ -96,7 +96,9 @@ TEST_CASE("gltf: the shipped bodies read as their BVH skeletons, with a skinned 
             const int k = *theirs.find(ours.names[j]);
             CHECK((gltf_positions[j] - bvh_positions[k]).norm() < 1e-6);
         }
-        CHECK(read->character.height_m == Approx(bvh->height_m).margin(0.01));
+        // The leaf joints' End Sites come from the mesh: the toe's is the tip of a foot that rests on the floor
+        // with its radius (make_character_bodies.py), so the glTF character stands up to 2 cm shorter.
+        CHECK(read->character.height_m == Approx(bvh->height_m).margin(0.02));
         CHECK(read->character.body_map.mapped_count() == bvh->body_map.mapped_count());
         const SkinnedMesh& mesh = read->mesh;
         CHECK(mesh.vertex_count() > 1000);
