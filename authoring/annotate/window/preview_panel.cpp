@@ -1,11 +1,13 @@
 #include "preview_panel.h"
 
 #include "bake.h"
+#include "player_scene.h"
 #include "scene_geometry.h"
 #include "scene_view.h"
 #include "strike_filmstrip.h"
 
 #include "kumite/core/retrieval.h"
+#include "kumite/formats/character_body.h"
 #include "kumite/formats/character_catalog.h"
 
 #include <QComboBox>
@@ -23,6 +25,7 @@ namespace kumite::annotate {
 struct PreviewPanel::Character {
     std::string name;
     BvhFile file;
+    std::shared_ptr<const SkinnedMesh> body; // drawn skinned where OpenGL is; null without a body
     RestAnatomy anatomy;
     std::unique_ptr<CharacterRig> rig;
 };
@@ -173,6 +176,10 @@ bool PreviewPanel::load_character() {
     }
     character->anatomy = std::move(*anatomy);
     character->rig = std::make_unique<CharacterRig>(character->file.clip.skeleton, character->anatomy);
+    // Its body, when it has one; a body that does not fit is left out (the capsules still show the strike).
+    if (Result<std::optional<SkinnedMesh>> body = load_character_body(default_characters_dir(), name, character->file.clip.skeleton); body && *body) {
+        character->body = std::make_shared<const SkinnedMesh>(std::move(**body));
+    }
     m_character = std::move(character);
     return true;
 }
@@ -248,7 +255,12 @@ void PreviewPanel::replay() {
 void PreviewPanel::show_frame() {
     if (!m_playback) return;
     const int frame = std::clamp(m_frame, 0, m_playback->motion.frame_count() - 1);
-    view::strike_frame_scene(*m_playback, frame, 0, m_view->scene());
+    view::Scene& scene = m_view->scene();
+    view::strike_frame_scene(*m_playback, frame, 0, scene);
+    if (m_character && m_character->body) {
+        view::add_skinned_body(scene, m_character->body, m_playback->motion.skeleton, m_playback->motion.pose(frame));
+        for (view::Capsule& capsule : scene.capsules) capsule.of_body = true; // the character's bones: QPainter draws them
+    }
     m_view->update();
 }
 
