@@ -5,6 +5,7 @@
 #include "kumite/runtime/bout.h"
 #include "kumite/runtime/fighter.h"
 #include "kumite/formats/bvh_reader.h"
+#include "kumite/formats/character_body.h"
 #include "kumite/formats/motion_database_file.h"
 #include "support/allocation_counter.h"
 #include "support/standing_character.h"
@@ -87,14 +88,23 @@ TEST_CASE("fighter: a step allocates nothing, through guard, strike, recovery an
     CHECK(scope.count() == 0);
 }
 
-TEST_CASE("bout: a step allocates nothing, with a dodging simulated user, orders and a character switch", "[core]") {
+TEST_CASE("bout: a step allocates nothing, with bodies, a dodging simulated user, orders and a character switch", "[core]") {
     const MotionDatabase database = golden();
     const kumite::test::StandingCharacter brawler("brawler", database.view());
     const kumite::test::StandingCharacter giant("giant", database.view());
     Result<std::unique_ptr<HeadTracker>> tracker = HeadTracker::open("simulate:dodge", DtrackConfig{}, 5);
     REQUIRE(tracker);
-    Result<std::unique_ptr<Bout>> bout = Bout::create(database.view(), {{"brawler", brawler.file, nullptr}, {"giant", giant.file, nullptr}}, std::move(*tracker), BoutOptions{});
+    // With their skinned bodies, as kumite play loads them: prepared once, nothing per frame.
+    const std::filesystem::path characters = kumite::test::source_dir() / "data/characters";
+    Result<std::optional<SkinnedMesh>> brawler_body = load_character_body(characters, "brawler", brawler.skeleton());
+    Result<std::optional<SkinnedMesh>> giant_body = load_character_body(characters, "giant", giant.skeleton());
+    REQUIRE((brawler_body && *brawler_body && giant_body && *giant_body));
+    Result<std::unique_ptr<Bout>> bout = Bout::create(database.view(),
+                                                      {{"brawler", brawler.file, std::make_shared<const SkinnedMesh>(std::move(**brawler_body))},
+                                                       {"giant", giant.file, std::make_shared<const SkinnedMesh>(std::move(**giant_body))}},
+                                                      std::move(*tracker), BoutOptions{});
     REQUIRE(bout);
+    REQUIRE((*bout)->character_body(0) != nullptr);
     (*bout)->step(0.0);
     std::size_t events = 0;
     kumite::test::AllocationScope scope;
