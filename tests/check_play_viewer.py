@@ -2,8 +2,8 @@
 """The player's viewer under Xvfb: `kumite play` without --headless opens the window, steps the bout in real time
 for a few seconds with two orders, saves a screenshot and exits. The report must say the viewer ran and the
 strikes happened; the screenshot must show the fighter (enough pixels of a saturated colour: the body's, or the
-capsules') and the HUD. Then the skinned body against the capsules at the same camera ({"bodies": false}): the body
-must cover far more pixels, and stay inside the capsules' outline grown by a quarter of its height (a skinning error
+capsules') and the HUD. Then three brawlers' skinned bodies (one mesh upload) against their capsules at the same
+camera ({"bodies": false}): the bodies must cover far more pixels, and stay inside the capsules' outline grown by a quarter of its height (a skinning error
 shows as a spike across the screen). Then the wall-screen view: head-coupled from the simulated user's eyes, stereo
 side by side: the fighter must be in both halves.
 
@@ -95,16 +95,22 @@ def main():
     assert fighter > 2000, "the fighter is not visible in the screenshot"
     assert hud > 200, "the HUD is not visible in the screenshot"
 
-    # The skinned body against the capsules, same character, camera and still user.
-    counts = {}
+    # The skinned body against the capsules, same character, camera and still user; three fighters share one
+    # upload of the brawler's mesh.
+    counts, uploads = {}, {}
     for bodies in (True, False):
         config, picture = os.path.join(out, f"bodies_{bodies}.json"), os.path.join(out, f"bodies_{bodies}.png")
+        summary_path = os.path.join(out, f"bodies_{bodies}_report.json")
         open(config, "w").write(json.dumps({"bodies": bodies}))
-        command = ["xvfb-run", "-a", "-s", "-screen 0 1280x720x24", kumite, "play", database, "--character", "brawler",
-                   "--tracker", "simulate:still", "--viewer-config", config, "--duration", "2", "--screenshot", picture]
+        command = ["xvfb-run", "-a", "-s", "-screen 0 1280x720x24", kumite, "play", database, "--character", "brawler", "--fighters", "3",
+                   "--tracker", "simulate:still", "--viewer-config", config, "--duration", "2", "--screenshot", picture,
+                   "--report", summary_path]
         result = subprocess.run(command, capture_output=True, text=True, timeout=120)
         assert result.returncode == 0, f"kumite play ({'bodies' if bodies else 'capsules'}) exited {result.returncode}: {result.stderr}"
         counts[bodies] = fighter_pixels(read_png(picture))
+        uploads[bodies] = json.load(open(summary_path))["viewer_drawing"]["body_meshes_uploaded"]
+    print(f"body meshes uploaded for three brawlers: {uploads[True]} (capsules only: {uploads[False]})")
+    assert uploads[True] == 1 and uploads[False] == 0, "three fighters of one character should share one mesh upload"
     (body, body_box), (capsules, capsule_box) = counts[True], counts[False]
     grow = (capsule_box[3] - capsule_box[1]) // 4
     inside = (body_box[0] >= capsule_box[0] - grow and body_box[1] >= capsule_box[1] - grow and

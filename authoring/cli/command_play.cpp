@@ -355,12 +355,13 @@ int run_play(int argc, char** argv) {
     };
 
     const bool realtime = arguments.has("realtime") || bout.live() || viewer;
+    view::PlayerRunOutcome viewer_outcome;
     if (viewer) {
         view::PlayerRunOptions run;
         run.duration_s = duration_s;
         run.stop_after_duration = arguments.has("duration") || arguments.has("screenshot");
         run.screenshot_path = arguments.value("screenshot").value_or("");
-        const int status = view::run_player_window(bout, viewer_settings, run, after_step);
+        const int status = view::run_player_window(bout, viewer_settings, run, after_step, &viewer_outcome);
         if (status != 0) return status;
     } else {
         const long long frames = static_cast<long long>(std::llround(duration_s * bout.rate_hz()));
@@ -389,6 +390,7 @@ int run_play(int argc, char** argv) {
     nlohmann::json report = play_report_json(bout);
     report["realtime"] = realtime;
     report["viewer"] = viewer;
+    if (viewer) report["viewer_drawing"] = {{"renderer", viewer_outcome.renderer}, {"body_meshes_uploaded", viewer_outcome.body_mesh_uploads}};
     if (const std::optional<std::string> path = arguments.value("report")) {
         if (Result<void> written = write_file_atomically(*path, report.dump(2) + "\n"); !written) return input_error(written.error().message);
     }

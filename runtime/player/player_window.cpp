@@ -58,6 +58,7 @@ public:
     }
 
     bool screenshot_failed = false;
+    PlayerRunOutcome outcome;
 
 protected:
     void keyPressEvent(QKeyEvent* event) override {
@@ -181,6 +182,8 @@ private:
     }
 
     void finish() {
+        outcome.renderer = m_view->renderer_description().toStdString();
+        outcome.body_mesh_uploads = m_view->body_mesh_uploads();
         if (!m_options.screenshot_path.empty()) {
             refresh_scene();
             const QImage image = m_view->grab_image();
@@ -286,7 +289,8 @@ private:
 
 } // namespace
 
-int run_player_window(Bout& bout, const ViewerSettings& settings, const PlayerRunOptions& options, const std::function<void()>& after_step) {
+int run_player_window(Bout& bout, const ViewerSettings& settings, const PlayerRunOptions& options, const std::function<void()>& after_step,
+                      PlayerRunOutcome* outcome) {
     static int argc = 1;
     static char name[] = "kumite";
     static char* argv[] = {name, nullptr};
@@ -295,6 +299,7 @@ int run_player_window(Bout& bout, const ViewerSettings& settings, const PlayerRu
     if (settings.fullscreen) window.showFullScreen();
     else window.show();
     application.exec();
+    if (outcome) *outcome = window.outcome;
     return window.screenshot_failed ? 1 : 0;
 }
 

@@ -19,9 +19,15 @@ struct PlayerRunOptions {
     std::string screenshot_path;       // when set: after duration_s, save the window as PNG and close
 };
 
+// What the window saw, for the report.
+struct PlayerRunOutcome {
+    std::string renderer;       // "OpenGL 4.5 (llvmpipe ...)" or the QPainter fallback
+    int body_mesh_uploads = 0;  // skinned meshes uploaded to the GPU (one per character with a body drawn)
+};
+
 // Opens the window and runs until it closes (needs a display). `after_step` is called after every bout step
 // (event logging). Returns 0, or 1 when the screenshot could not be written.
 int run_player_window(Bout& bout, const ViewerSettings& settings, const PlayerRunOptions& options,
-                      const std::function<void()>& after_step);
+                      const std::function<void()>& after_step, PlayerRunOutcome* outcome = nullptr);
 
 } // namespace kumite::view

@@ -107,6 +107,8 @@ void SceneView::set_stereo(StereoMode mode) {
 
 bool SceneView::quad_buffer_available() const { return false; }
 
+int SceneView::body_mesh_uploads() const { return m_gl ? m_gl->body_mesh_uploads() : 0; }
+
 QString SceneView::renderer_description() const {
     if (m_gl) {
         const QString base = m_gl->description.isEmpty() ? QString("OpenGL") : m_gl->description;

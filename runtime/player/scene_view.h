@@ -48,6 +48,7 @@ public:
     void frame_scene(); // the orbit camera looks at everything in the scene
     bool uses_opengl() const { return m_gl != nullptr; }
     QString renderer_description() const; // "OpenGL 4.5 (llvmpipe)" or "QPainter (no OpenGL)"
+    int body_mesh_uploads() const;        // skinned meshes the OpenGL renderer has uploaded (0 without OpenGL)
 
     // Picking: the id of the nearest pickable capsule under the widget point, or -1.
     int pick(QPoint point) const;
