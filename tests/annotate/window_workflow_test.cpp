@@ -490,6 +490,11 @@ TEST_CASE("annotate window: the preview plays the selected kick on every charact
         CHECK(preview.playback()->overshoot_m <= 0.03);
         CHECK(preview.playback()->joint_limit_violations == 0);
         CHECK(preview.status_text().contains("joint-limit violations"));
+        // Every shipped character has a body: the preview draws it skinned (its bones stay for QPainter).
+        const view::Scene& drawn = preview.view()->scene();
+        REQUIRE(drawn.bodies.size() == 1);
+        CHECK(drawn.bodies[0].skin.size() == std::size_t(preview.playback()->motion.skeleton.joint_count()));
+        CHECK(std::all_of(drawn.capsules.begin(), drawn.capsules.end(), [](const view::Capsule& c) { return c.of_body; }));
     }
     // Shift+drag in the view moves the target in the plane facing the camera, and the strike follows it.
     view::SceneView* view = preview.view();
