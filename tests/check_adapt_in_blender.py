@@ -35,13 +35,28 @@ def distance(a, b):
     return norm([x - y for x, y in zip(a, b)])
 
 
-def main():
-    parser = argparse.ArgumentParser()
+def add_database_arguments(parser):
+    """--kumite, --database or --annotations with --mocap-root, --characters: shared by the Blender checks of adapt."""
     parser.add_argument("--kumite", required=True)
     parser.add_argument("--database")
     parser.add_argument("--annotations", help="bake these first (when no --database)")
     parser.add_argument("--mocap-root")
     parser.add_argument("--characters", required=True)
+
+
+def database_in(args, work):
+    """The --database, or the --annotations baked into `work`."""
+    if args.database:
+        return args.database
+    database = os.path.join(work, "db.kdb")
+    subprocess.run([args.kumite, "bake", args.annotations, "-o", database, "--mocap-root", args.mocap_root],
+                   check=True, stdout=subprocess.DEVNULL)
+    return database
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    add_database_arguments(parser)
     parser.add_argument("--tolerance", type=float, default=0.01)
     parser.add_argument("--overshoot", type=float, default=0.03)
     args = parser.parse_args()
@@ -51,10 +66,7 @@ def main():
     failures = 0
     checked = 0
     with tempfile.TemporaryDirectory() as work:
-        if not args.database:
-            args.database = os.path.join(work, "db.kdb")
-            subprocess.run([args.kumite, "bake", args.annotations, "-o", args.database, "--mocap-root", args.mocap_root],
-                           check=True, stdout=subprocess.DEVNULL)
+        args.database = database_in(args, work)
         for file in sorted(os.listdir(args.characters)):
             if not file.endswith(".bvh"):
                 continue

@@ -20,7 +20,7 @@ import tempfile
 HERE = os.path.dirname(os.path.abspath(__file__))
 JOINTS = os.path.join(HERE, "..", "scripts", "blender_gltf_joints.py")
 sys.path.insert(0, HERE)
-from check_adapt_in_blender import CASES  # noqa: E402  the same orders and targets as the BVH check
+from check_adapt_in_blender import CASES, add_database_arguments, database_in  # noqa: E402  the same orders and targets as the BVH check
 
 
 def glb_frame_rate(path):
@@ -46,11 +46,7 @@ def distance(a, b):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("--kumite", required=True)
-    parser.add_argument("--database")
-    parser.add_argument("--annotations", help="bake these first (when no --database)")
-    parser.add_argument("--mocap-root")
-    parser.add_argument("--characters", required=True)
+    add_database_arguments(parser)
     parser.add_argument("--tolerance", type=float, default=0.01)
     args = parser.parse_args()
     if not shutil.which("blender"):
@@ -59,10 +55,7 @@ def main():
     failures, checked = 0, 0
     characters = sorted({f.rsplit(".", 1)[0] for f in os.listdir(args.characters) if f.endswith(".glb")})
     with tempfile.TemporaryDirectory() as work:
-        if not args.database:
-            args.database = os.path.join(work, "db.kdb")
-            subprocess.run([args.kumite, "bake", args.annotations, "-o", args.database, "--mocap-root", args.mocap_root],
-                           check=True, stdout=subprocess.DEVNULL)
+        args.database = database_in(args, work)
         for character in characters:
             for command, side, target in CASES:
                 stem = os.path.join(work, f"{character}_{command}_{side}")
