@@ -21,6 +21,7 @@
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QFileDialog>
+#include <QLineEdit>
 #include <QFileInfo>
 #include <QMessageBox>
 #include <QMimeData>
@@ -93,9 +94,12 @@ void answer_next_dialog(std::function<void(T*)> answer) {
 }
 
 // The file dialog fills its name field from the suggested path once its folder model has loaded, which under load
-// can come after a selection made too early: select until the dialog reports our file, then accept.
+// can come after a selection made too early: select until the dialog reports our file, then accept. Qt's own
+// dialog ignores selectFile while its name field has the focus (as a typing user would want), which it gets
+// depending on timing: the field gives up the focus first.
 void choose_file(const QString& path) {
     answer_next_dialog_when<QFileDialog>([path](QFileDialog* dialog) {
+        if (auto* name = dialog->findChild<QLineEdit*>("fileNameEdit")) name->clearFocus();
         dialog->selectFile(path);
         const QStringList selected = dialog->selectedFiles();
         if (selected.size() != 1 || QFileInfo(selected[0]).absoluteFilePath() != QFileInfo(path).absoluteFilePath()) {
