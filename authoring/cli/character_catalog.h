@@ -10,6 +10,7 @@
 #include "kumite/formats/character_catalog.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace kumite::cli {
@@ -17,6 +18,9 @@ namespace kumite::cli {
 FlagSpec characters_dir_flag();
 // --characters-dir, else data/characters.
 std::filesystem::path characters_folder(const Arguments& arguments);
+
+// Why `path` cannot take a recording (kumite writes binary .glb, not .gltf), or nullopt: checked before the work.
+std::optional<std::string> recording_path_problem(const std::string& path);
 
 // Writes `motion` (on `character`'s skeleton) to `path`: a .glb with the character's body when it has one
 // (character NAME of `folder`, or NAME a path to a glTF file), otherwise a BVH in the character's own layout

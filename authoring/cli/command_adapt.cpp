@@ -9,8 +9,6 @@
 #include "kumite/runtime/strike_playback.h"
 #include "strike_filmstrip.h"
 #include "kumite/formats/atomic_file.h"
-#include "kumite/formats/bvh_writer.h"
-#include "kumite/formats/gltf_reader.h"
 
 #include <algorithm>
 #include <iostream>
@@ -63,9 +61,7 @@ int run_adapt(int argc, char** argv) {
     const std::optional<std::string> report_path = arguments.value("report");
     if (!target_text) return usage_error(adapt_spec(), "--target X,Y,Z is required");
     if (!record) return usage_error(adapt_spec(), "--record OUT.bvh (or OUT.glb) is required");
-    if (is_gltf_path(*record) && std::filesystem::path(*record).extension() != ".glb") {
-        return usage_error(adapt_spec(), "--record: kumite records glTF as binary .glb, not .gltf");
-    }
+    if (std::optional<std::string> problem = recording_path_problem(*record)) return usage_error(adapt_spec(), "--record " + *problem);
     Result<Eigen::Vector3d> target = parse_point(*target_text, "--target");
     if (!target) return usage_error(adapt_spec(), target.error().message);
     const Result<long long> lead = arguments.integer("lead", 0, 1000, 6);

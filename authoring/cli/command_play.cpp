@@ -301,8 +301,7 @@ int run_play(int argc, char** argv) {
     // A path to a character file of one's own joins the shipped ones under its file's stem.
     if (std::none_of(entries.begin(), entries.end(), [&](const CharacterEntry& entry) { return entry.name == wanted; })) {
         const std::filesystem::path path(wanted);
-        std::error_code error;
-        if ((is_gltf_path(path) || path.extension() == ".bvh") && std::filesystem::is_regular_file(path, error)) {
+        if (character_file_exists(path)) {
             const bool stem_taken = std::any_of(entries.begin(), entries.end(), [&](const CharacterEntry& entry) { return entry.name == path.stem().string(); });
             entries.push_back({stem_taken ? path.filename().string() : path.stem().string(), path, is_gltf_path(path) ? path : std::filesystem::path()});
             wanted = entries.back().name;
@@ -315,8 +314,8 @@ int run_play(int argc, char** argv) {
     options.fighter.defence.enabled = !arguments.has("no-defence");
     options.fighter.variety_recent = static_cast<int>(*variety);
     options.record = arguments.value("record").has_value();
-    if (options.record && is_gltf_path(*arguments.value("record")) && std::filesystem::path(*arguments.value("record")).extension() != ".glb") {
-        return usage_error(play_spec(), "--record: kumite records glTF as binary .glb, not .gltf");
+    if (std::optional<std::string> problem = options.record ? recording_path_problem(*arguments.value("record")) : std::nullopt) {
+        return usage_error(play_spec(), "--record " + *problem);
     }
     options.start_character = -1;
     std::vector<BoutCharacter> characters;

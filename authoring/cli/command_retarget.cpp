@@ -5,8 +5,6 @@
 #include "commands.h"
 #include "kumite/core/retarget_clip.h"
 #include "kumite/formats/atomic_file.h"
-#include "kumite/formats/bvh_writer.h"
-#include "kumite/formats/gltf_reader.h"
 
 #include <iostream>
 
@@ -51,9 +49,7 @@ int run_retarget(int argc, char** argv) {
     const std::optional<std::string> output = arguments.value("output");
     if (!character_name) return usage_error(retarget_spec(), "--character NAME is required");
     if (!output) return usage_error(retarget_spec(), "-o OUT.bvh (or OUT.glb) is required");
-    if (is_gltf_path(*output) && std::filesystem::path(*output).extension() != ".glb") {
-        return usage_error(retarget_spec(), "-o: kumite writes glTF as binary .glb, not .gltf");
-    }
+    if (std::optional<std::string> problem = recording_path_problem(*output)) return usage_error(retarget_spec(), "-o " + *problem);
     Result<CaptureOptions> options = capture_options_from(arguments);
     if (!options) return usage_error(retarget_spec(), options.error().message);
 
@@ -70,15 +66,8 @@ int run_retarget(int argc, char** argv) {
 
     RetargetReport report;
     const Clip retargeted = retarget_clip(report, source->clip, *source_anatomy, character->clip.skeleton, *target_anatomy);
-    if (is_gltf_path(*output)) { // the motion on the character's body
-        if (Result<void> written = write_recording(*output, retargeted, *character, characters, *character_name); !written) {
-            return input_error(written.error().message);
-        }
-    } else {
-        const BvhLayout layout = retargeted.has_local_translations() ? bvh_default_layout(retargeted) : character->layout;
-        if (Result<void> written = bvh_write_file(*output, retargeted, layout, character->unit); !written) {
-            return input_error(written.error().message);
-        }
+    if (Result<void> written = write_recording(*output, retargeted, *character, characters, *character_name); !written) {
+        return input_error(written.error().message);
     }
     const nlohmann::json document = report_json(report, *character_name, *output);
     if (const std::optional<std::string> report_path = arguments.value("report")) {

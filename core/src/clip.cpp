@@ -24,15 +24,12 @@ Pose Clip::rest_pose() const {
 
 void clip_append_pose(Clip& clip, const PoseView& pose) {
     assert(pose.local_rotations.size() == static_cast<std::size_t>(clip.skeleton.joint_count()));
+    const std::vector<Eigen::Vector3d>& rest = clip.skeleton.rest_offsets;
     if (!pose.local_translations.empty() && !clip.has_local_translations()) {
-        for (int frame = 0; frame < clip.frame_count(); ++frame) {
-            clip.local_translations.insert(clip.local_translations.end(), clip.skeleton.rest_offsets.begin(), clip.skeleton.rest_offsets.end());
-        }
+        for (int frame = 0; frame < clip.frame_count(); ++frame) clip.local_translations.insert(clip.local_translations.end(), rest.begin(), rest.end());
     }
-    if (clip.has_local_translations() || !pose.local_translations.empty()) {
-        if (pose.local_translations.empty()) clip.local_translations.insert(clip.local_translations.end(), clip.skeleton.rest_offsets.begin(), clip.skeleton.rest_offsets.end());
-        else clip.local_translations.insert(clip.local_translations.end(), pose.local_translations.begin(), pose.local_translations.end());
-    }
+    if (!pose.local_translations.empty()) clip.local_translations.insert(clip.local_translations.end(), pose.local_translations.begin(), pose.local_translations.end());
+    else if (clip.has_local_translations()) clip.local_translations.insert(clip.local_translations.end(), rest.begin(), rest.end());
     clip.root_translations.push_back(pose.root_translation);
     clip.local_rotations.insert(clip.local_rotations.end(), pose.local_rotations.begin(), pose.local_rotations.end());
 }

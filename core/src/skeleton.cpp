@@ -11,6 +11,14 @@ std::optional<int> Skeleton::find(std::string_view name) const {
     return std::nullopt;
 }
 
+std::vector<Eigen::Vector3d> rest_model_positions(const Skeleton& skeleton) {
+    std::vector<Eigen::Vector3d> positions(skeleton.joint_count());
+    for (int j = 0; j < skeleton.joint_count(); ++j) {
+        positions[j] = skeleton.rest_offsets[j] + (skeleton.parents[j] >= 0 ? positions[skeleton.parents[j]] : Eigen::Vector3d::Zero());
+    }
+    return positions;
+}
+
 std::vector<int> Skeleton::children(int joint) const {
     std::vector<int> result;
     for (int child = joint + 1; child < joint_count(); ++child) {

@@ -5,22 +5,10 @@
 #include <cmath>
 
 namespace kumite {
-namespace {
-
-std::vector<Eigen::Vector3d> rest_world_positions(const Skeleton& skeleton) {
-    std::vector<Eigen::Vector3d> world(skeleton.joint_count());
-    for (int j = 0; j < skeleton.joint_count(); ++j) {
-        world[j] = skeleton.rest_offsets[j] + (skeleton.parents[j] >= 0 ? world[skeleton.parents[j]] : Eigen::Vector3d::Zero());
-    }
-    return world;
-}
-
-} // namespace
-
 Result<SkinnedMesh> body_on_skeleton(const GltfCharacter& body, const Skeleton& skeleton, const std::string& body_source) {
     const Skeleton& body_skeleton = body.character.clip.skeleton;
-    const std::vector<Eigen::Vector3d> body_world = rest_world_positions(body_skeleton);
-    const std::vector<Eigen::Vector3d> world = rest_world_positions(skeleton);
+    const std::vector<Eigen::Vector3d> body_world = rest_model_positions(body_skeleton);
+    const std::vector<Eigen::Vector3d> world = rest_model_positions(skeleton);
     const double tolerance = 0.01 * std::max(body.character.height_m, 0.3);
 
     // Each body joint the mesh uses, found in the skeleton by name, at the same rest position.

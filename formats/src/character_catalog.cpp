@@ -39,6 +39,11 @@ std::vector<CharacterEntry> list_characters(const std::filesystem::path& folder)
     return entries;
 }
 
+bool character_file_exists(const std::filesystem::path& path) {
+    std::error_code error;
+    return (is_gltf_path(path) || path.extension() == ".bvh") && std::filesystem::is_regular_file(path, error);
+}
+
 Result<BvhFile> read_character_file(const std::filesystem::path& path) {
     if (!is_gltf_path(path)) return bvh_read_file(path);
     Result<GltfCharacter> character = gltf_read_file(path);
@@ -52,9 +57,7 @@ Result<BvhFile> load_character(const std::filesystem::path& folder, const std::s
         if (entry.name == name) return read_character_file(entry.file);
     }
     // A path to a character file of one's own.
-    std::error_code error;
-    const std::filesystem::path path(name);
-    if ((is_gltf_path(path) || path.extension() == ".bvh") && std::filesystem::is_regular_file(path, error)) return read_character_file(path);
+    if (character_file_exists(name)) return read_character_file(name);
     std::string known;
     for (const CharacterEntry& entry : entries) known += (known.empty() ? "" : ", ") + entry.name;
     return make_error(ErrorCode::invalid, "unknown character '" + name + "' in " + folder.string() +

@@ -99,10 +99,7 @@ BvhLayout rotation_layout(int joints) {
 // standing height and the viewer's capsules use. A leaf joint gets one at the farthest point of the body it moves
 // most (identity rest rotations: a world vector is the offset in the joint's frame).
 void add_end_sites_from_mesh(Skeleton& skeleton, const SkinnedMesh& mesh) {
-    std::vector<Eigen::Vector3d> world(skeleton.joint_count());
-    for (int j = 0; j < skeleton.joint_count(); ++j) {
-        world[j] = skeleton.rest_offsets[j] + (skeleton.parents[j] >= 0 ? world[skeleton.parents[j]] : Eigen::Vector3d::Zero());
-    }
+    const std::vector<Eigen::Vector3d> world = rest_model_positions(skeleton);
     std::vector<double> farthest(skeleton.joint_count(), 0.0);
     std::vector<Eigen::Vector3d> tip(skeleton.joint_count(), Eigen::Vector3d::Zero());
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {

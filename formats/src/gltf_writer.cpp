@@ -39,8 +39,7 @@ public:
     }
 
     int add_floats(const std::vector<float>& values, int type, int components, int target = 0) {
-        const int accessor = add(values.data(), values.size() * sizeof(float), values.size() / components, type, TINYGLTF_COMPONENT_TYPE_FLOAT, target);
-        return accessor;
+        return add(values.data(), values.size() * sizeof(float), values.size() / components, type, TINYGLTF_COMPONENT_TYPE_FLOAT, target);
     }
 
     // min/max per component, required on POSITION and animation inputs.

@@ -32,6 +32,9 @@ struct Skeleton {
     void assert_valid() const;
 };
 
+// Every joint's position in the rest pose (identity rotations): the rest offsets summed down the tree. [joint]
+std::vector<Eigen::Vector3d> rest_model_positions(const Skeleton& skeleton);
+
 // The deepest joint that is an ancestor of both (a joint is its own ancestor).
 int lowest_common_ancestor(const Skeleton& skeleton, int a, int b);
 

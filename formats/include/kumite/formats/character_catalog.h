@@ -26,6 +26,9 @@ struct CharacterEntry {
 // glTF file without a BVH of its name (skeleton and body from the one file).
 std::vector<CharacterEntry> list_characters(const std::filesystem::path& folder);
 
+// True for an existing .bvh, .glb or .gltf file: a character of one's own, passed by path.
+bool character_file_exists(const std::filesystem::path& path);
+
 // Reads a character file: BVH, or glTF (its skeleton and rest pose; gltf_reader.h).
 Result<BvhFile> read_character_file(const std::filesystem::path& path);
 
