@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace kumite::bake {
@@ -24,7 +25,9 @@ struct BakeOptions {
     std::filesystem::path mocap_root = ".";   // annotation sources are relative to it (absolute ones are kept)
     int clusters = 16;
     int jobs = 0;                             // 0: every core
-    double frame_time_s = 1.0 / 30.0;
+    double frame_time_s = 1.0 / 30.0;         // the database's
+    // The rate of captures whose files give none and the annotation file's "captures" does not list (--fps).
+    std::optional<double> capture_fps;
     double feature_window_s = 0.1;            // between the samples of a pose feature's window
     std::uint64_t seed = 0x6b756d697465ull;
     int max_kmeans_iterations = 50;

@@ -54,8 +54,20 @@ Result<std::vector<BakeSource>> bake_read_sources(const RawAnnotations& annotati
         BakeSource& source = sources[index];
         const std::string where = std::string(annotations_name) + ": " + first_clip_using(annotations, source.name) + ": ";
         auto fail = [&](const std::string& what) { errors[index] = make_error(ErrorCode::invalid, where + what); };
-        Result<BvhFile> file = capture_read_file(source.path);
+        BvhReadOptions read;
+        if (const auto rate = annotations.capture_fps.find(source.name); rate != annotations.capture_fps.end()) read.frame_rate_hz = rate->second;
+        Result<BvhFile> file = capture_read_file(source.path, read);
         if (!file) return fail(file.error().message);
+        if (!file->clip.has_frame_rate() && options.capture_fps) {
+            read.frame_rate_hz = options.capture_fps;
+            file = capture_read_file(source.path, read);
+            if (!file) return fail(file.error().message);
+        }
+        if (!file->clip.has_frame_rate()) {
+            return fail(source.path.string() + ": the capture does not say its frame rate (its 'Frame Time' is 0 or missing): set it in the "
+                                               "annotation file (\"captures\": {\"" + source.name + "\": {\"fps\": N}}, or in kumite-annotate), "
+                                               "or give it to the bake with --fps N");
+        }
         source.file = std::move(*file);
         Result<RestAnatomy> anatomy = rest_anatomy_build(source.file.clip, source.file.body_map);
         if (!anatomy) return fail(source.path.string() + ": " + anatomy.error().message);

@@ -96,6 +96,10 @@ FlagSpec strict_flag() {
     return {"strict", "", "refuse captures that other readers accept with a warning (an 'End name' block, frames not one per line,\n"
                           "values after the declared frames)"};
 }
+FlagSpec fps_flag() {
+    return {"fps", "N", "frame rate of a capture whose file gives none ('Frame Time: 0' or no such line); replaces a rate the\n"
+                        "file states, with a warning"};
+}
 FlagSpec mocap_root_flag() {
     return {"mocap-root", "DIR", "where relative capture paths are also looked up (default data/mocap)"};
 }

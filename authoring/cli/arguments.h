@@ -53,6 +53,7 @@ std::string usage_text(const CommandSpec& spec);
 // Flags every capture-reading command shares.
 FlagSpec unit_flag();
 FlagSpec strict_flag(); // --strict: refuse a capture that reads only with warnings
+FlagSpec fps_flag();    // --fps N: the rate of a capture whose file gives none
 FlagSpec mocap_root_flag();
 FlagSpec body_map_flag();
 FlagSpec json_flag();

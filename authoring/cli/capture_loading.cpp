@@ -2,6 +2,7 @@
 
 #include "kumite/formats/capture_file.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <iostream>
 #include <unistd.h>
@@ -19,7 +20,27 @@ Result<CaptureOptions> capture_options_from(const Arguments& arguments) {
     options.mocap_root = root ? std::filesystem::path(*root) : default_mocap_root();
     if (const std::optional<std::string> body_map = arguments.value("body-map")) options.body_map_file = *body_map;
     options.read.strict = arguments.has("strict");
+    if (const std::optional<std::string> fps = arguments.value("fps")) {
+        Result<double> rate = frame_rate_from_text(*fps);
+        if (!rate) return rate.error();
+        options.read.frame_rate_hz = *rate;
+    }
     return options;
+}
+
+Result<double> frame_rate_from_text(const std::string& text) {
+    char* end = nullptr;
+    const double rate = std::strtod(text.c_str(), &end);
+    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(rate) || rate < 0.001 || rate > 100000.0) {
+        return make_error(ErrorCode::invalid, "--fps: expected a frame rate from 0.001 to 100000 (frames per second), found '" + text + "'");
+    }
+    return rate;
+}
+
+Result<void> require_frame_rate(const BvhFile& file, const std::filesystem::path& path, std::string_view what_needs_it) {
+    if (file.clip.has_frame_rate()) return {};
+    return make_error(ErrorCode::invalid, path.string() + ": the capture does not say its frame rate (its 'Frame Time' is 0 or missing), and " +
+                                              std::string(what_needs_it) + " needs it: give it with --fps N (e.g. --fps 100)");
 }
 
 std::filesystem::path resolve_capture_path(const std::filesystem::path& path, const std::filesystem::path& mocap_root) {

@@ -22,6 +22,13 @@ struct CaptureOptions {
 // Reads the shared flags; a bad --unit is a usage error.
 Result<CaptureOptions> capture_options_from(const Arguments& arguments);
 
+// A --fps value: a finite rate in [0.001, 100000].
+Result<double> frame_rate_from_text(const std::string& text);
+
+// Refuses a capture without a frame rate for work that needs time (`what_needs_it`: "suggest"), saying how to
+// give one.
+Result<void> require_frame_rate(const BvhFile& file, const std::filesystem::path& path, std::string_view what_needs_it);
+
 // `path` as given when it exists, else under the mocap root when relative.
 std::filesystem::path resolve_capture_path(const std::filesystem::path& path, const std::filesystem::path& mocap_root);
 

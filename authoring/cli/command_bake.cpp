@@ -17,7 +17,7 @@ namespace kumite::cli {
 const CommandSpec& bake_spec() {
     static const CommandSpec spec{
         "bake",
-        "ANNOTATIONS.json -o OUT.kdb [--mocap-root DIR] [--clusters K] [--exr DIR] [--jobs N]",
+        "ANNOTATIONS.json -o OUT.kdb [--mocap-root DIR] [--clusters K] [--exr DIR] [--jobs N] [--fps N]",
         "Bakes the annotated clips (and their mirrors) into one motion database: clips resampled to 30 fps and\n"
         "stored in the morphology-independent representation, per-pose features, foot contacts and hit-trajectory\n"
         "boxes, and k-means clusters of all poses under Kovar's distance. The same inputs give the same bytes.\n"
@@ -28,7 +28,9 @@ const CommandSpec& bake_spec() {
          {"clusters", "K", "number of pose clusters (default 16)"},
          {"exr", "DIR", "also write pose_distance.exr and clip_NNN_NAME.exr animation textures into DIR"},
          {"jobs", "N", "threads to use (default: every core)"},
-         {"fps", "F", "database frame rate (default 30)"}}};
+         {"fps", "N", "frame rate of captures whose files give none ('Frame Time: 0') and the annotation file's\n"
+                      "\"captures\" does not list"},
+         {"database-fps", "F", "database frame rate (default 30)"}}};
     return spec;
 }
 
@@ -41,8 +43,14 @@ int run_bake(int argc, char** argv) {
     if (!clusters) return usage_error(bake_spec(), clusters.error().message);
     const Result<long long> jobs = arguments.integer("jobs", 1, 256, std::max(1u, std::thread::hardware_concurrency()));
     if (!jobs) return usage_error(bake_spec(), jobs.error().message);
-    const Result<long long> fps = arguments.integer("fps", 1, 1000, 30);
+    const Result<long long> fps = arguments.integer("database-fps", 1, 1000, 30);
     if (!fps) return usage_error(bake_spec(), fps.error().message);
+    std::optional<double> capture_fps;
+    if (const std::optional<std::string> text = arguments.value("fps")) {
+        Result<double> rate = frame_rate_from_text(*text);
+        if (!rate) return usage_error(bake_spec(), rate.error().message);
+        capture_fps = *rate;
+    }
 
     const std::string annotations_path = arguments.positionals[0];
     Result<RawAnnotations> annotations = annotations_read_file(annotations_path);
@@ -55,6 +63,7 @@ int run_bake(int argc, char** argv) {
     options.clusters = static_cast<int>(*clusters);
     options.jobs = static_cast<int>(*jobs);
     options.frame_time_s = 1.0 / static_cast<double>(*fps);
+    options.capture_fps = capture_fps;
     options.keep_motion = arguments.has("exr") || arguments.value("exr").has_value();
     options.progress = [&](const bake::BakeProgress& step) { progress.update(step.stage, step.done, step.total); };
     std::cout << "baking " << annotations->clips.size() << " annotated clips from " << annotations_path << " on " << options.jobs

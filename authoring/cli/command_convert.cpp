@@ -17,7 +17,7 @@ const CommandSpec& convert_spec() {
         "orders, same world positions when read again. The output keeps the input's unit unless --out-unit\n"
         "says otherwise. The output is written to a temporary file and renamed, never left half-written.",
         2, 2,
-        {unit_flag(), strict_flag(), {"out-unit", "m|cm|mm|in|cmu", "length unit of the written file (default: the input's)"},
+        {unit_flag(), strict_flag(), fps_flag(), {"out-unit", "m|cm|mm|in|cmu", "length unit of the written file (default: the input's)"},
          mocap_root_flag()}};
     return spec;
 }

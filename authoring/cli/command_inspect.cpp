@@ -19,9 +19,11 @@ nlohmann::json inspect_json(const BvhFile& file, const std::filesystem::path& pa
     document["end_sites"] = clip.skeleton.end_sites.size();
     document["channels"] = file.layout.channel_count();
     document["frames"] = clip.frame_count();
-    document["frame_time_s"] = clip.frame_time_s;
-    document["fps"] = 1.0 / clip.frame_time_s;
-    document["duration_s"] = clip.duration_s();
+    // No rate (a file that says 'Frame Time: 0', read without --fps): null, with the reason in "warnings".
+    document["frame_time_s"] = clip.has_frame_rate() ? nlohmann::json(clip.frame_time_s) : nlohmann::json();
+    document["fps"] = clip.has_frame_rate() ? nlohmann::json(1.0 / clip.frame_time_s) : nlohmann::json();
+    document["fps_source"] = file.frame_rate_in_file ? "file" : clip.has_frame_rate() ? "--fps" : "none";
+    document["duration_s"] = clip.has_frame_rate() ? nlohmann::json(clip.duration_s()) : nlohmann::json();
     document["unit"] = file.unit.name;
     document["unit_scale_m"] = file.unit.metres;
     document["unit_detected"] = file.unit_detected;
@@ -52,8 +54,10 @@ void print_inspect_text(const nlohmann::json& document) {
     std::cout << document["file"].get<std::string>() << "\n"
               << "  joints       " << document["joints"] << " (" << document["channels"] << " channels, "
               << document["end_sites"] << " End Sites)\n"
-              << "  frames       " << document["frames"] << " at " << std::setprecision(6)
-              << document["fps"].get<double>() << " fps, " << document["duration_s"].get<double>() << " s\n"
+              << "  frames       " << document["frames"];
+    if (document["fps"].is_null()) std::cout << " (no frame rate: give it with --fps N)\n";
+    else std::cout << " at " << std::setprecision(6) << document["fps"].get<double>() << " fps, " << document["duration_s"].get<double>() << " s\n";
+    std::cout
               << "  unit         " << document["unit"].get<std::string>() << " (" << document["unit_scale_m"].get<double>()
               << " m, " << (document["unit_detected"].get<bool>() ? "detected" : "given") << ")\n"
               << "  height       " << std::setprecision(4) << document["height_m"].get<double>() << " m\n"
@@ -75,7 +79,7 @@ const CommandSpec& inspect_spec() {
         "Reads a BVH capture and describes it: joints, frames, frame rate, length unit, standing height,\n"
         "rotation orders and the body map (which joint plays each body part).",
         1, 1,
-        {unit_flag(), strict_flag(), mocap_root_flag(), body_map_flag(), json_flag()}};
+        {unit_flag(), strict_flag(), fps_flag(), mocap_root_flag(), body_map_flag(), json_flag()}};
     return spec;
 }
 

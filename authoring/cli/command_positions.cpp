@@ -52,7 +52,7 @@ const CommandSpec& positions_spec() {
         1, 1,
         {{"frames", "LIST", "frame indices, e.g. 0,10,25 or 10-20"},
          {"all", "", "every frame"},
-         unit_flag(), strict_flag(), mocap_root_flag(), json_flag()}};
+         unit_flag(), strict_flag(), fps_flag(), mocap_root_flag(), json_flag()}};
     return spec;
 }
 

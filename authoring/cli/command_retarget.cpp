@@ -21,7 +21,7 @@ const CommandSpec& retarget_spec() {
         {{"character", "NAME", "target character (see kumite characters)"},
          {"output", "OUT.bvh|OUT.glb", "where to write the retargeted capture (also -o); .glb: with the character's body"},
          {"report", "OUT.json", "write the quality report as JSON"},
-         unit_flag(), strict_flag(), mocap_root_flag(), body_map_flag(), characters_dir_flag(), json_flag()}};
+         unit_flag(), strict_flag(), fps_flag(), mocap_root_flag(), body_map_flag(), characters_dir_flag(), json_flag()}};
     return spec;
 }
 
@@ -55,6 +55,9 @@ int run_retarget(int argc, char** argv) {
 
     Result<BvhFile> source = load_capture(arguments.positionals[0], *options);
     if (!source) return input_error(source.error().message);
+    if (Result<void> timed = require_frame_rate(*source, arguments.positionals[0], "retarget (foot contacts)"); !timed) {
+        return input_error(timed.error().message);
+    }
     const std::filesystem::path characters = arguments.value("characters-dir").value_or(default_characters_dir().string());
     Result<BvhFile> character = load_character(characters, *character_name);
     if (!character) return usage_error(retarget_spec(), character.error().message);

@@ -28,7 +28,7 @@ const CommandSpec& suggest_spec() {
         {{"segment", "PART", "a body part (hand_l, foot_r, head, ...): report its extension peaks"},
          {"write-annotations", "OUT.json", "write every suggestion as a clip of an annotation file ready for bake"},
          {"compare", "ANNOTATIONS.json", "propose kind and height for the file's strikes and compare them with its labels"},
-         unit_flag(), strict_flag(), mocap_root_flag(), body_map_flag(), json_flag()}};
+         unit_flag(), strict_flag(), fps_flag(), mocap_root_flag(), body_map_flag(), json_flag()}};
     return spec;
 }
 
@@ -76,11 +76,13 @@ int run_suggest(int argc, char** argv) {
     for (const std::string& path : arguments.positionals) {
         Result<BvhFile> file = load_capture(path, *options);
         if (!file) return input_error(file.error().message);
+        if (Result<void> timed = require_frame_rate(*file, path, "suggest (strike speeds)"); !timed) return input_error(timed.error().message);
         Result<RestAnatomy> anatomy = rest_anatomy_build(file->clip, file->body_map);
         if (!anatomy) return input_error(path + ": " + anatomy.error().message);
         const std::vector<StrikeSuggestion> strikes = strikes_detect(file->clip, *anatomy, segment);
         files.push_back({{"file", path}, {"strikes", strikes_json(strikes)}});
         const std::string source = source_relative_to_root(resolve_capture_path(path, options->mocap_root), options->mocap_root);
+        if (!file->frame_rate_in_file) annotations.capture_fps[source] = 1.0 / file->clip.frame_time_s; // the bake needs it too
         for (const StrikeSuggestion& strike : strikes) annotations.clips.push_back(clip_from_suggestion(strike, source));
     }
     if (const std::optional<std::string> output = arguments.value("write-annotations")) {
@@ -154,8 +156,13 @@ int run_compare(const std::string& annotations_path, const CaptureOptions& optio
         if (!clip.is_strike() || !clip.segment || !clip.hit_frame) continue;
         auto found = captures.find(clip.source);
         if (found == captures.end()) {
-            Result<BvhFile> file = load_capture(clip.source, options);
+            CaptureOptions clip_options = options;
+            if (const auto rate = annotations->capture_fps.find(clip.source); rate != annotations->capture_fps.end() && !options.read.frame_rate_hz) {
+                clip_options.read.frame_rate_hz = rate->second;
+            }
+            Result<BvhFile> file = load_capture(clip.source, clip_options);
             if (!file) return input_error(annotations_path + ": clip " + clip.name + ": " + file.error().message);
+            if (Result<void> timed = require_frame_rate(*file, clip.source, "suggest (strike speeds)"); !timed) return input_error(timed.error().message);
             Result<RestAnatomy> anatomy = rest_anatomy_build(file->clip, file->body_map);
             if (!anatomy) return input_error(clip.source + ": " + anatomy.error().message);
             found = captures.emplace(clip.source, Loaded{std::move(*file), std::move(*anatomy)}).first;

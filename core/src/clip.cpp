@@ -40,7 +40,7 @@ void clip_sample(Pose& pose, const Clip& clip, double time_s) {
     pose.local_rotations.resize(joints);
     pose.local_translations.resize(clip.has_local_translations() ? joints : 0);
 
-    const double frame_position = std::clamp(time_s / clip.frame_time_s, 0.0, double(clip.frame_count() - 1));
+    const double frame_position = clip.has_frame_rate() ? std::clamp(time_s / clip.frame_time_s, 0.0, double(clip.frame_count() - 1)) : 0.0;
     const int frame0 = static_cast<int>(std::floor(frame_position));
     const int frame1 = std::min(frame0 + 1, clip.frame_count() - 1);
     const double alpha = frame_position - frame0;

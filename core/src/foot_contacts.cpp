@@ -8,6 +8,7 @@ std::vector<ContactInterval> foot_contacts_detect(const std::vector<Eigen::Vecto
                                                   double leg_length, double standing_ankle_y,
                                                   const FootContactThresholds& thresholds) {
     std::vector<ContactInterval> contacts;
+    if (!(frame_time_s > 0.0)) return contacts; // no rate, no speeds: callers refuse such clips first
     const int frames = static_cast<int>(ankle.size());
     bool planted = false;
     for (int frame = 0; frame < frames; ++frame) {

@@ -137,7 +137,7 @@ Clip retarget_clip(RetargetReport& report, const Clip& source, const RestAnatomy
     Pose pose;
     std::vector<std::vector<Eigen::Vector3d>> pinned_at(2);
     for (int foot = 0; foot < 2; ++foot) pinned_at[foot].resize(contacts[foot].size());
-    const int release_frames = std::max(1, static_cast<int>(k_release_s / source.frame_time_s + 0.5));
+    const int release_frames = source.has_frame_rate() ? std::max(1, static_cast<int>(k_release_s / source.frame_time_s + 0.5)) : 1;
     const double length_ratio = target_anatomy.leg_length / source_anatomy.leg_length;
     for (int frame = 0; frame < frames; ++frame) {
         const auto start = std::chrono::steady_clock::now();

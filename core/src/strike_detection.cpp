@@ -61,6 +61,7 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
     const Skeleton& skeleton = clip.skeleton;
     const BodyMap& map = anatomy.body_map;
     const int frames = clip.frame_count();
+    if (!clip.has_frame_rate()) return {}; // speeds need the rate: callers refuse clips without one first
     const double dt = clip.frame_time_s;
     std::vector<Eigen::Vector3d> positions(skeleton.joint_count());
     std::vector<Eigen::Quaterniond> rotations(skeleton.joint_count());

@@ -76,7 +76,7 @@ StrikeLabels strike_labels_propose(const Clip& clip, const RestAnatomy& anatomy,
     const int root = anatomy.limbs[static_cast<int>(leg ? (left ? Limb::leg_l : Limb::leg_r) : (left ? Limb::arm_l : Limb::arm_r))].root;
 
     const int approach_frames = std::max({2, static_cast<int>(std::lround(k_approach_fraction * (hit_frame - first_frame))),
-                                          static_cast<int>(std::lround(k_min_approach_s / clip.frame_time_s))});
+                                          clip.has_frame_rate() ? static_cast<int>(std::lround(k_min_approach_s / clip.frame_time_s)) : 2});
     forward_kinematics(positions, rotations, skeleton, clip.pose(std::max(0, hit_frame - approach_frames)));
     const Eigen::Vector3d approach_start = positions[joint];
     forward_kinematics(positions, rotations, skeleton, clip.pose(hit_frame));

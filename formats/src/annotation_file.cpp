@@ -90,6 +90,25 @@ Result<RawAnnotatedClip> clip_from_json(const json& item, size_t index, std::str
     return clip;
 }
 
+// "captures": {"<source>": {"fps": N, ...}}: takes the rates out (into `rates`) and leaves any other keys.
+Result<void> capture_rates_from_json(json& captures, const std::string& source, std::map<std::string, double>& rates) {
+    if (!captures.is_object()) return make_error(ErrorCode::invalid, source + ": \"captures\" must be an object of capture paths");
+    for (auto& [capture, entry] : captures.items()) {
+        const std::string where = source + ": captures: \"" + capture + "\": ";
+        if (!entry.is_object()) return make_error(ErrorCode::invalid, where + "expected an object such as {\"fps\": 100}");
+        if (!entry.contains("fps")) continue;
+        if (!entry["fps"].is_number() || !(entry["fps"].get<double>() >= 0.001 && entry["fps"].get<double>() <= 100000.0)) {
+            return make_error(ErrorCode::invalid, where + "\"fps\" must be a frame rate from 0.001 to 100000");
+        }
+        rates[capture] = entry["fps"].get<double>();
+        entry.erase("fps");
+    }
+    for (auto it = captures.begin(); it != captures.end();) {
+        it = it->empty() ? captures.erase(it) : std::next(it);
+    }
+    return {};
+}
+
 } // namespace
 
 bool RawAnnotatedClip::is_strike() const { return !k_non_strikes.count(semantics); }
@@ -159,6 +178,9 @@ Result<RawAnnotations> annotations_parse(std::string_view text, std::string_view
     for (const auto& [key, value] : document.items()) {
         if (key != "version" && key != "clips" && key != "format") extra[key] = value;
     }
+    if (extra.contains("captures")) {
+        if (Result<void> read = capture_rates_from_json(extra["captures"], source, annotations.capture_fps); !read) return read.error();
+    }
     annotations.extra_json = extra.dump();
     annotations.version = k_annotation_format_version; // read older versions, write the current one
     if (Result<void> valid = annotations.validate(source); !valid) return valid.error();
@@ -178,6 +200,8 @@ std::string annotations_write_string(const RawAnnotations& annotations) {
     if (!document.is_object()) document = json::object();
     document["format"] = "kumite-annotations";
     document["version"] = k_annotation_format_version;
+    for (const auto& [capture, fps] : annotations.capture_fps) document["captures"][capture]["fps"] = fps;
+    if (document.contains("captures") && document["captures"].empty()) document.erase("captures");
     json clips = json::array();
     for (const RawAnnotatedClip& clip : annotations.clips) {
         json item = json::parse(clip.extra_json, nullptr, false);

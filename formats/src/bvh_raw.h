@@ -9,7 +9,8 @@ namespace kumite {
 struct RawBvh {
     Skeleton skeleton; // file units
     BvhLayout layout;
-    double frame_time_s = 0.0;
+    double frame_time_s = 0.0;   // 0: the file gives no rate
+    std::string frame_time_note; // "file:line: why there is no rate", when there is none
     int frame_count = 0;
 };
 

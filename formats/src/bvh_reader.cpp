@@ -180,7 +180,7 @@ Result<void> HierarchyParser::parse(RawBvh& raw) {
     return {};
 }
 
-Result<void> parse_motion_header(TextCursor& cursor, std::string_view source, RawBvh& raw) {
+Result<void> parse_motion_header(TextCursor& cursor, std::string_view source, bool strict, RawBvh& raw) {
     auto fail = [&](const std::string& what) {
         return make_error(ErrorCode::parse, std::string(source) + ":" + std::to_string(cursor.line()) + ": " + what);
     };
@@ -203,15 +203,52 @@ Result<void> parse_motion_header(TextCursor& cursor, std::string_view source, Ra
                     format_number(frame_count));
     }
     raw.frame_count = static_cast<int>(frame_count);
-    if (!equals_ignore_case(cursor.next_token(), "Frame")) return fail("expected 'Frame Time:'");
+    // "Frame Time: t". Captures from the wild say 0 (the rate was not recorded) or leave the line out: the
+    // positions of each frame need no rate, so those read with a warning and no rate (frame_time_s = 0).
+    cursor.skip_whitespace();
+    const TextCursor before_frame_time = cursor;
+    const int frame_time_line = cursor.line();
+    if (!equals_ignore_case(cursor.next_token(), "Frame")) {
+        if (strict) return fail("expected 'Frame Time:' (refused: strict)");
+        cursor = before_frame_time;
+        raw.frame_time_s = 0.0;
+        raw.frame_time_note = std::string(source) + ":" + std::to_string(frame_time_line) +
+                              ": no 'Frame Time:' line: the capture has no frame rate";
+        return {};
+    }
     if (!equals_ignore_case(cursor.next_token().substr(0, 5), "Time:")) return fail("expected 'Frame Time:'");
     if (!cursor.parse_number(raw.frame_time_s)) {
         return fail("expected the frame time in seconds after 'Frame Time:', found " + cursor.peek_for_message());
     }
+    if (raw.frame_time_s == 0.0 && !strict) {
+        raw.frame_time_note = std::string(source) + ":" + std::to_string(cursor.line()) + ": 'Frame Time: 0': the capture has no frame rate";
+        return {};
+    }
     if (raw.frame_time_s < k_bvh_min_frame_time_s || raw.frame_time_s > k_bvh_max_frame_time_s) {
-        return fail("expected a frame time from 1e-06 to 3600 seconds after 'Frame Time:', found " + format_number(raw.frame_time_s));
+        return fail("expected a frame time from 1e-06 to 3600 seconds after 'Frame Time:', found " + format_number(raw.frame_time_s) +
+                    (raw.frame_time_s == 0.0 ? " (refused: strict)" : ""));
     }
     return {};
+}
+
+// The rate: the file's, or options.frame_rate_hz (which also overrides a stated rate, with a warning), or none
+// (frame_time_s = 0) with a warning that says how to give one.
+void apply_frame_rate(RawBvh& raw, std::string_view source, const BvhReadOptions& options, std::vector<std::string>& warnings) {
+    if (options.frame_rate_hz) {
+        const double given_s = 1.0 / *options.frame_rate_hz;
+        if (!raw.frame_time_note.empty()) {
+            warnings.push_back(raw.frame_time_note + "; read at " + format_number(*options.frame_rate_hz) + " fps (--fps)");
+        } else if (std::abs(given_s - raw.frame_time_s) > 1e-9 * raw.frame_time_s) {
+            warnings.push_back(std::string(source) + ": the file says " + format_number(1.0 / raw.frame_time_s) + " fps; read at " +
+                               format_number(*options.frame_rate_hz) + " fps (--fps)");
+        }
+        raw.frame_time_s = given_s;
+        return;
+    }
+    if (!raw.frame_time_note.empty()) {
+        warnings.push_back(raw.frame_time_note + "; positions are read per frame, and what needs time (suggest, bake, "
+                                                      "retarget, replay) needs the rate: --fps N, or \"fps\" in the annotation file");
+    }
 }
 
 } // namespace
@@ -242,7 +279,8 @@ Result<BvhFile> bvh_parse(std::string_view text, std::string_view source_name, c
     BvhFile file;
     HierarchyParser hierarchy(cursor, source_name, options.strict, file.warnings);
     if (Result<void> parsed = hierarchy.parse(raw); !parsed) return parsed.error();
-    if (Result<void> parsed = parse_motion_header(cursor, source_name, raw); !parsed) return parsed.error();
+    if (Result<void> parsed = parse_motion_header(cursor, source_name, options.strict, raw); !parsed) return parsed.error();
+    apply_frame_rate(raw, source_name, options, file.warnings);
 
     const int threads = options.threads > 0 ? options.threads : static_cast<int>(std::min(2u, std::thread::hardware_concurrency()));
     if (Result<void> parsed = bvh_parse_frames(cursor, source_name, raw, file.clip, threads, options.strict, file.warnings); !parsed) {
@@ -250,6 +288,7 @@ Result<BvhFile> bvh_parse(std::string_view text, std::string_view source_name, c
     }
     file.clip.skeleton = std::move(raw.skeleton);
     file.clip.frame_time_s = raw.frame_time_s;
+    file.frame_rate_in_file = raw.frame_time_note.empty();
     file.layout = std::move(raw.layout);
 
     // Unit: measure in file units, then convert every length once.

@@ -276,3 +276,48 @@ TEST_CASE("issue: messages split into file, line and text", "[annotate]") {
     CHECK(bare.file == "x.bvh");
     CHECK(bare.message == "something odd");
 }
+
+TEST_CASE("annotation document: a capture without a frame rate gets one from the animator, saved, with undo", "[annotate][corpus]") {
+    test::qt_application();
+    const std::string source = "hachaj-shorinryu/s1_mae_geri_right_sample0.bvh";
+    if (!std::filesystem::exists(test::mocap_root() / source)) {
+        WARN("no hachaj-shorinryu captures");
+        return;
+    }
+    AnnotationDocument document(test::mocap_root());
+    REQUIRE(document.open_capture(QString::fromStdString((test::mocap_root() / source).string())));
+    const LoadedCapture* capture = document.current_capture();
+    REQUIRE(capture != nullptr);
+    CHECK(capture->source == source);
+    CHECK_FALSE(capture->file.clip.has_frame_rate());
+    CHECK(capture->suggestions.empty()); // no speeds without a rate
+    // The Issues dock lists the reader's warning with its file and line.
+    CHECK(std::any_of(document.issues().begin(), document.issues().end(),
+                      [](const Issue& issue) { return issue.message.contains("Frame Time: 0") && issue.line > 0; }));
+
+    document.set_capture_fps(source, 100.0);
+    CHECK(document.undo_stack()->undoText() == "Set Frame Rate");
+    CHECK(document.current_capture() == capture); // read again in place
+    CHECK(capture->file.clip.frame_time_s == Approx(0.01));
+    CHECK_FALSE(capture->suggestions.empty()); // the kick is found once the rate is known
+    CHECK(document.capture_fps(source) == 100.0);
+    CHECK(document.is_dirty());
+
+    const std::filesystem::path file = test::make_temp_dir("annotate-fps") / "rates.json";
+    REQUIRE(document.save_as(QString::fromStdString(file.string())));
+    Result<RawAnnotations> saved = annotations_read_file(file);
+    REQUIRE(saved.has_value());
+    CHECK(saved->capture_fps.at(source) == 100.0);
+
+    document.undo_stack()->undo();
+    CHECK_FALSE(document.capture_fps(source).has_value());
+    CHECK_FALSE(capture->file.clip.has_frame_rate());
+    CHECK(capture->suggestions.empty());
+
+    // Opening the saved file reads the capture at its rate.
+    AnnotationDocument reopened(test::mocap_root());
+    REQUIRE(reopened.open_annotations(QString::fromStdString(file.string())));
+    REQUIRE(reopened.open_capture(QString::fromStdString((test::mocap_root() / source).string())));
+    REQUIRE(reopened.current_capture() != nullptr);
+    CHECK(reopened.current_capture()->file.clip.frame_time_s == Approx(0.01));
+}

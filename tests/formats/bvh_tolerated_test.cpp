@@ -126,6 +126,47 @@ TEST_CASE("bvh_tolerated: whole frames after the declared ones are ignored with 
     CHECK_THAT(bvh_parse(text, "extra.bvh", strict()).error().message, Catch::Contains("extra.bvh:64:") && Catch::Contains("strict"));
 }
 
+TEST_CASE("bvh_tolerated: 'Frame Time: 0' or no Frame Time line reads without a rate, with a warning", "[formats]") {
+    const std::string plain_text = hierarchy(k_end_site) + motion(31, some_frames(31), " ", "\n");
+    const BvhFile plain = *bvh_parse(plain_text, "plain.bvh");
+    std::string zero = plain_text, missing = plain_text;
+    zero.replace(zero.find("Frame Time: 0.0333333"), 21, "Frame Time: 0.0");
+    missing.erase(missing.find("Frame Time: 0.0333333\n"), 22);
+    for (const auto& [text, line] : {std::pair{zero, 32}, std::pair{missing, 32}}) {
+        Result<BvhFile> read = bvh_parse(text, "norate.bvh");
+        REQUIRE(read.has_value());
+        CHECK_FALSE(read->clip.has_frame_rate());
+        CHECK_FALSE(read->frame_rate_in_file);
+        CHECK(read->clip.duration_s() == 0.0);
+        REQUIRE(read->warnings.size() == 1);
+        CHECK_THAT(read->warnings[0], Catch::Contains("norate.bvh:" + std::to_string(line) + ":") && Catch::Contains("no frame rate") &&
+                                          Catch::Contains("--fps N"));
+        check_same_motion(*read, plain); // positions per frame need no rate
+        CHECK_THAT(bvh_parse(text, "norate.bvh", strict()).error().message, Catch::Contains("norate.bvh:") && Catch::Contains("strict"));
+        // A given rate fills the gap (still with a warning: the file is defective).
+        BvhReadOptions at_100;
+        at_100.frame_rate_hz = 100.0;
+        Result<BvhFile> rated = bvh_parse(text, "norate.bvh", at_100);
+        REQUIRE(rated.has_value());
+        CHECK(rated->clip.frame_time_s == Approx(0.01));
+        CHECK(rated->clip.duration_s() == Approx(0.3));
+        REQUIRE(rated->warnings.size() == 1);
+        CHECK_THAT(rated->warnings[0], Catch::Contains("read at 100 fps"));
+    }
+    // A given rate replaces a stated one, saying so; the same rate says nothing.
+    BvhReadOptions at_60;
+    at_60.frame_rate_hz = 60.0;
+    Result<BvhFile> replaced = bvh_parse(plain_text, "plain.bvh", at_60);
+    REQUIRE(replaced->warnings.size() == 1);
+    CHECK_THAT(replaced->warnings[0], Catch::Contains("the file says 30") && Catch::Contains("read at 60 fps"));
+    at_60.frame_rate_hz = 1.0 / 0.0333333;
+    CHECK(bvh_parse(plain_text, "plain.bvh", at_60)->warnings.empty());
+    // Other frame times are still refused.
+    std::string negative = plain_text;
+    negative.replace(negative.find("Frame Time: 0.0333333"), 21, "Frame Time: -0.01");
+    CHECK_THAT(bvh_parse(negative, "neg.bvh").error().message, Catch::Contains("neg.bvh:32:"));
+}
+
 TEST_CASE("bvh_tolerated: what is truly malformed is still refused, saying where", "[formats]") {
     const std::vector<std::vector<double>> frames = some_frames(31);
     std::string one_line = hierarchy(k_end_site) + motion(31, frames, " ", " ");

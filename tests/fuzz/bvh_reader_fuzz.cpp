@@ -66,7 +66,7 @@ void check_invariants(const kumite::BvhFile& file) {
     }
     FUZZ_CHECK(clip.local_rotations.size() == frames * joints);
     FUZZ_CHECK(clip.local_translations.empty() || clip.local_translations.size() == frames * joints);
-    FUZZ_CHECK(std::isfinite(clip.frame_time_s) && clip.frame_time_s > 0.0);
+    FUZZ_CHECK(std::isfinite(clip.frame_time_s) && (clip.frame_time_s > 0.0 || (clip.frame_time_s == 0.0 && !file.frame_rate_in_file)));
     FUZZ_CHECK(file.unit.metres > 0.0);
 }
 

@@ -38,7 +38,7 @@ void AnnotationDocument::load_clip_captures() {
     for (const RawAnnotatedClip& clip : m_annotations.clips) sources.insert(clip.source);
     for (const std::string& source : sources) {
         const bool known = m_captures.find(source) != nullptr;
-        Result<const LoadedCapture*> loaded = m_captures.load(source);
+        Result<const LoadedCapture*> loaded = m_captures.load(source, capture_fps(source));
         if (!loaded) report_error(loaded.error().message, QString::fromStdString(source));
         else if (!known) report_capture_warnings(**loaded, {});
     }
@@ -53,7 +53,8 @@ void AnnotationDocument::report_capture_warnings(const LoadedCapture& capture, c
 
 Result<void> AnnotationDocument::open_capture(const QString& path) {
     const bool known = m_captures.find(path.toStdString()) != nullptr;
-    Result<const LoadedCapture*> loaded = m_captures.load(path.toStdString());
+    const std::string source = source_relative_to_root(m_captures.resolve(path.toStdString()), m_captures.mocap_root());
+    Result<const LoadedCapture*> loaded = m_captures.load(path.toStdString(), capture_fps(source));
     if (!loaded) return loaded.error();
     if (!known) report_capture_warnings(**loaded, path);
     emit captures_changed();
@@ -165,6 +166,27 @@ void AnnotationDocument::add_suggestion(const StrikeSuggestion& strike, const st
     m_undo_stack.push(new InsertClipCommand(*this, clip_count(), std::move(clip), tr("Accept Suggestion")));
 }
 
+std::optional<double> AnnotationDocument::capture_fps(const std::string& source) const {
+    const auto found = m_annotations.capture_fps.find(source);
+    return found == m_annotations.capture_fps.end() ? std::nullopt : std::optional<double>(found->second);
+}
+
+void AnnotationDocument::set_capture_fps(const std::string& source, std::optional<double> fps) {
+    if (source.empty() || capture_fps(source) == fps) return;
+    m_undo_stack.push(new SetCaptureRateCommand(*this, source, capture_fps(source), fps));
+}
+
+void AnnotationDocument::apply_set_capture_fps(const std::string& source, std::optional<double> fps) {
+    if (fps) m_annotations.capture_fps[source] = *fps;
+    else m_annotations.capture_fps.erase(source);
+    if (m_captures.find(source)) {
+        Result<const LoadedCapture*> loaded = m_captures.reload(source, fps);
+        if (!loaded) report_error(loaded.error().message, QString::fromStdString(source));
+        emit captures_changed();
+        if (source == m_current_source) emit current_capture_changed();
+    }
+}
+
 void AnnotationDocument::remove_clip(int index) {
     if (index < 0 || index >= clip_count()) return;
     m_undo_stack.push(new RemoveClipCommand(*this, index));
@@ -214,7 +236,7 @@ void AnnotationDocument::apply_set_clip(int index, const RawAnnotatedClip& clip)
 void AnnotationDocument::apply_insert_clip(int index, const RawAnnotatedClip& clip) {
     m_annotations.clips.insert(m_annotations.clips.begin() + index, clip);
     if (!m_captures.find(clip.source)) {
-        Result<const LoadedCapture*> loaded = m_captures.load(clip.source);
+        Result<const LoadedCapture*> loaded = m_captures.load(clip.source, capture_fps(clip.source));
         if (!loaded) report_error(loaded.error().message, QString::fromStdString(clip.source));
         emit captures_changed();
     }

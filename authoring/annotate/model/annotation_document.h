@@ -14,6 +14,8 @@
 #include <QString>
 #include <QUndoStack>
 
+#include <optional>
+
 #include <vector>
 
 namespace kumite::annotate {
@@ -67,6 +69,11 @@ public:
     const CaptureLibrary& captures() const { return m_captures; }
     const LoadedCapture* current_capture() const { return m_captures.find(m_current_source); }
     void set_current_source(const std::string& source);
+    // The rate the animator gave a capture whose file gives none (saved as the file's "captures"), if any.
+    std::optional<double> capture_fps(const std::string& source) const;
+    // "Set Frame Rate": gives (or, with none, takes back) a capture's rate; the capture is read again at it, so its
+    // suggestions, timeline and playback follow. One undo step.
+    void set_capture_fps(const std::string& source, std::optional<double> fps);
     // The capture clip `index` cuts from, or null when it is not loaded.
     const LoadedCapture* capture_of(int index) const { return m_captures.find(clip(index).source); }
 
@@ -81,6 +88,7 @@ public:
     void apply_insert_clip(int index, const RawAnnotatedClip& clip);
     void apply_remove_clip(int index);
     void apply_replace_clips(const std::vector<RawAnnotatedClip>& clips);
+    void apply_set_capture_fps(const std::string& source, std::optional<double> fps);
 
 signals:
     void clips_reset();               // the list changed shape (insert, remove, open, recover)

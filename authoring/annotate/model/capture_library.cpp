@@ -33,12 +33,11 @@ std::filesystem::path CaptureLibrary::resolve(const std::string& source) const {
     return m_mocap_root / path;
 }
 
-Result<const LoadedCapture*> CaptureLibrary::load(const std::filesystem::path& path_or_source) {
-    const std::filesystem::path path = resolve(path_or_source.string());
-    const std::string source = source_relative_to_root(path, m_mocap_root);
-    if (const LoadedCapture* known = find(source)) return known;
-
-    Result<BvhFile> file = capture_read_file(path);
+Result<std::unique_ptr<LoadedCapture>> CaptureLibrary::read(const std::filesystem::path& path, const std::string& source,
+                                                             std::optional<double> fps) const {
+    BvhReadOptions options;
+    options.frame_rate_hz = fps;
+    Result<BvhFile> file = capture_read_file(path, options);
     if (!file) return file.error();
     auto capture = std::make_unique<LoadedCapture>();
     capture->path = path;
@@ -47,12 +46,32 @@ Result<const LoadedCapture*> CaptureLibrary::load(const std::filesystem::path& p
     Result<RestAnatomy> anatomy = rest_anatomy_build(capture->file.clip, capture->file.body_map);
     if (anatomy) {
         capture->anatomy = std::move(*anatomy);
-        capture->suggestions = strikes_detect(capture->file.clip, *capture->anatomy);
+        capture->suggestions = strikes_detect(capture->file.clip, *capture->anatomy); // none without a rate
     } else {
         capture->anatomy_error = path.string() + ": " + anatomy.error().message;
     }
-    m_captures.push_back(std::move(capture));
+    return capture;
+}
+
+Result<const LoadedCapture*> CaptureLibrary::load(const std::filesystem::path& path_or_source, std::optional<double> fps) {
+    const std::filesystem::path path = resolve(path_or_source.string());
+    const std::string source = source_relative_to_root(path, m_mocap_root);
+    if (const LoadedCapture* known = find(source)) return known;
+    Result<std::unique_ptr<LoadedCapture>> capture = read(path, source, fps);
+    if (!capture) return capture.error();
+    m_captures.push_back(std::move(*capture));
     return m_captures.back().get();
+}
+
+Result<const LoadedCapture*> CaptureLibrary::reload(const std::string& source, std::optional<double> fps) {
+    for (const auto& existing : m_captures) {
+        if (existing->source != source) continue;
+        Result<std::unique_ptr<LoadedCapture>> capture = read(existing->path, source, fps);
+        if (!capture) return capture.error();
+        *existing = std::move(**capture);
+        return existing.get();
+    }
+    return load(source, fps);
 }
 
 const LoadedCapture* CaptureLibrary::find(const std::string& source) const {

@@ -45,13 +45,19 @@ public:
     // A clip's source as a path to read: as given when it exists or is absolute, else under the mocap root.
     std::filesystem::path resolve(const std::string& source) const;
 
-    // Reads the capture once (cached by source). Errors name the file and, for BVH syntax, the line.
-    Result<const LoadedCapture*> load(const std::filesystem::path& path_or_source);
+    // Reads the capture once (cached by source). Errors name the file and, for BVH syntax, the line. `fps` is
+    // the rate of a capture whose file gives none (the annotation file's "captures"); without one such a capture
+    // loads with no rate (a warning, no suggestions).
+    Result<const LoadedCapture*> load(const std::filesystem::path& path_or_source, std::optional<double> fps = std::nullopt);
+    // Reads a loaded capture again at another rate (none: the file's own); the LoadedCapture stays at its address.
+    Result<const LoadedCapture*> reload(const std::string& source, std::optional<double> fps);
     const LoadedCapture* find(const std::string& source) const;
     const std::vector<std::unique_ptr<LoadedCapture>>& captures() const { return m_captures; }
     void clear() { m_captures.clear(); }
 
 private:
+    Result<std::unique_ptr<LoadedCapture>> read(const std::filesystem::path& path, const std::string& source, std::optional<double> fps) const;
+
     std::filesystem::path m_mocap_root;
     std::vector<std::unique_ptr<LoadedCapture>> m_captures; // in opening order
 };

@@ -66,4 +66,11 @@ ReplaceClipsCommand::ReplaceClipsCommand(AnnotationDocument& document, std::vect
 void ReplaceClipsCommand::undo() { m_document.apply_replace_clips(m_before); }
 void ReplaceClipsCommand::redo() { m_document.apply_replace_clips(m_after); }
 
+SetCaptureRateCommand::SetCaptureRateCommand(AnnotationDocument& document, std::string source, std::optional<double> before,
+                                             std::optional<double> after)
+    : QUndoCommand(QObject::tr("Set Frame Rate")), m_document(document), m_source(std::move(source)), m_before(before), m_after(after) {}
+
+void SetCaptureRateCommand::undo() { m_document.apply_set_capture_fps(m_source, m_before); }
+void SetCaptureRateCommand::redo() { m_document.apply_set_capture_fps(m_source, m_after); }
+
 } // namespace kumite::annotate

@@ -6,6 +6,8 @@
 
 #include <QUndoCommand>
 
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace kumite::annotate {
@@ -68,6 +70,19 @@ public:
 private:
     AnnotationDocument& m_document;
     std::vector<RawAnnotatedClip> m_before, m_after;
+};
+
+// "Set Frame Rate" of a capture whose file gives none: the rate before and after (none: not given).
+class SetCaptureRateCommand : public QUndoCommand {
+public:
+    SetCaptureRateCommand(AnnotationDocument& document, std::string source, std::optional<double> before, std::optional<double> after);
+    void undo() override;
+    void redo() override;
+
+private:
+    AnnotationDocument& m_document;
+    std::string m_source;
+    std::optional<double> m_before, m_after;
 };
 
 } // namespace kumite::annotate

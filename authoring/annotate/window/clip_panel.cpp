@@ -162,7 +162,8 @@ void ClipPanel::add_clip_at(int frame) {
     if (!capture) return;
     const int last_frame = std::max(0, capture->file.clip.frame_count() - 1);
     const int around = frame < 0 ? last_frame / 2 : std::clamp(frame, 0, last_frame);
-    const int half_span = std::max(1, int(0.5 / capture->file.clip.frame_time_s)); // half a second each way
+    // Half a second each way (50 frames when the capture has no rate).
+    const int half_span = capture->file.clip.has_frame_rate() ? std::max(1, int(0.5 / capture->file.clip.frame_time_s)) : 50;
     RawAnnotatedClip clip;
     clip.source = capture->source;
     clip.name = std::filesystem::path(capture->source).stem().string() + "_clip";

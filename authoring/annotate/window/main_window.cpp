@@ -11,6 +11,7 @@
 #include <QAction>
 #include <QApplication>
 #include <QDockWidget>
+#include <QInputDialog>
 #include <QKeySequence>
 #include <QMenuBar>
 #include <QStatusBar>
@@ -119,6 +120,8 @@ void MainWindow::build_actions() {
     edit->addAction(tr("&Add Clip at Current Frame"), QKeySequence(tr("Ctrl+K")), this,
                     [this] { m_clips->add_clip_at(m_timeline->current_frame()); });
     edit->addAction(tr("&Remove Clip"), QKeySequence::Delete, this, [this] { m_document->remove_clip(m_document->selected_clip()); });
+    edit->addSeparator();
+    edit->addAction(tr("Capture &Frame Rate..."), this, &MainWindow::ask_capture_fps);
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     view->addAction(tr("&Frame Character"), QKeySequence(tr("F")), this, [this] { m_view->frame_scene(); });
@@ -127,6 +130,29 @@ void MainWindow::build_actions() {
     view->addAction(tr("Step &Forward"), QKeySequence(tr("Right")), this, [this] { m_timeline->step(1); });
     view->addSeparator();
     for (QDockWidget* dock : findChildren<QDockWidget*>()) view->addAction(dock->toggleViewAction());
+}
+
+void MainWindow::ask_capture_fps() {
+    const LoadedCapture* capture = m_document->current_capture();
+    if (!capture) {
+        statusBar()->showMessage(tr("Open a capture first"), 5000);
+        return;
+    }
+    const std::optional<double> given = m_document->capture_fps(capture->source);
+    const bool in_file = capture->file.frame_rate_in_file;
+    const double shown = given ? *given : capture->file.clip.has_frame_rate() ? 1.0 / capture->file.clip.frame_time_s : 100.0;
+    const QString why = in_file ? tr("%1 says %2 fps. A rate given here replaces it (saved in the annotation file).")
+                                      .arg(QString::fromStdString(capture->source))
+                                      .arg(1.0 / capture->file.clip.frame_time_s, 0, 'g', 6)
+                                : tr("%1 does not say its frame rate ('Frame Time: 0'). The rate given here is saved in the "
+                                     "annotation file, and suggestions, playback and the bake use it.")
+                                      .arg(QString::fromStdString(capture->source));
+    bool accepted = false;
+    const double fps = QInputDialog::getDouble(this, tr("Capture Frame Rate"), why + "\n\n" + tr("Frames per second:"), shown, 1.0, 1000.0,
+                                               3, &accepted);
+    if (!accepted) return;
+    m_document->set_capture_fps(capture->source, fps);
+    statusBar()->showMessage(tr("%1 read at %2 fps").arg(QString::fromStdString(capture->source)).arg(fps, 0, 'g', 6), 5000);
 }
 
 void MainWindow::update_title() {
@@ -196,7 +222,8 @@ void MainWindow::jump_to(const PoseLocation& location) {
     m_document->select_clip(index);
     if (const LoadedCapture* capture = m_document->capture_of(index)) {
         const double frame_time = capture->file.clip.frame_time_s;
-        m_timeline->set_current_frame(location.source_first_frame + int(std::lround(location.capture_time_s / frame_time)));
+        const int offset = capture->file.clip.has_frame_rate() ? int(std::lround(location.capture_time_s / frame_time)) : 0;
+        m_timeline->set_current_frame(location.source_first_frame + offset);
     }
     statusBar()->showMessage(tr("Pose of %1, frame %2%3")
                                  .arg(QString::fromStdString(location.clip_name))

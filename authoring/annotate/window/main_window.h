@@ -55,6 +55,7 @@ protected:
 private:
     void build_actions();
     void build_docks();
+    void ask_capture_fps(); // Edit > Capture Frame Rate...
     void update_title();
     void refresh_scene(bool frame_camera = false);
     void on_picked(int joint);

@@ -33,6 +33,7 @@ struct PreviewPanel::Character {
 // The selected clip baked alone, and what it was baked from (to bake again only when that changes).
 struct PreviewPanel::Baked {
     RawAnnotatedClip clip;
+    std::optional<double> fps; // the capture's rate given in the annotation file, if any
     MotionDatabaseContent database;
 };
 
@@ -193,17 +194,18 @@ void PreviewPanel::rebuild() {
     }
     clip.mirror = false;
     if (!load_character()) return;
-    if (!m_baked || annotations_write_string({k_annotation_format_version, {m_baked->clip}, "{}"}) !=
-                        annotations_write_string({k_annotation_format_version, {clip}, "{}"})) {
+    const std::optional<double> fps = m_document.capture_fps(clip.source);
+    if (!m_baked || !clips_equal(m_baked->clip, clip) || m_baked->fps != fps) {
         RawAnnotations alone;
         alone.clips.push_back(clip);
+        if (fps) alone.capture_fps[clip.source] = *fps;
         bake::BakeOptions options;
         options.mocap_root = m_document.captures().mocap_root();
         options.clusters = 1;
         options.jobs = 1;
         Result<bake::BakeResult> baked = bake::bake_database(alone, "preview", options);
         if (!baked) return show_message(tr("Cannot preview %1: %2").arg(QString::fromStdString(clip.name), QString::fromStdString(baked.error().message)));
-        m_baked = std::make_unique<Baked>(Baked{clip, std::move(baked->database)});
+        m_baked = std::make_unique<Baked>(Baked{clip, fps, std::move(baked->database)});
     }
     // The clip's own hit on this character: its hit frame decoded on the character (through the MIR, as the
     // strike is), from its first frame placed at the origin facing +Z; the limb's extremity there.

@@ -124,7 +124,9 @@ void TimelinePanel::toggle_playing() {
     if (m_play_timer.isActive() || !capture) {
         m_play_timer.stop();
     } else {
-        m_play_timer.start(std::max(1, int(capture->file.clip.frame_time_s * 1000.0)));
+        // A capture without a rate plays at 100 fps until the animator gives one (Edit > Capture Frame Rate).
+        const double frame_time_s = capture->file.clip.has_frame_rate() ? capture->file.clip.frame_time_s : 0.01;
+        m_play_timer.start(std::max(1, int(frame_time_s * 1000.0)));
     }
     m_play->setIcon(style()->standardIcon(m_play_timer.isActive() ? QStyle::SP_MediaPause : QStyle::SP_MediaPlay));
 }
@@ -253,6 +255,10 @@ void TimelinePanel::update_readout() {
     }
     const int frame_count = capture->file.clip.frame_count();
     const double frame_time = capture->file.clip.frame_time_s;
+    if (!capture->file.clip.has_frame_rate()) {
+        m_readout->setText(tr("frame %1 / %2   (no frame rate: Edit > Capture Frame Rate)").arg(m_frame).arg(std::max(0, frame_count - 1)));
+        return;
+    }
     m_readout->setText(tr("frame %1 / %2   %3 s").arg(m_frame).arg(std::max(0, frame_count - 1)).arg(m_frame * frame_time, 0, 'f', 3));
 }
 

@@ -30,12 +30,15 @@ struct Pose {
 
 struct Clip {
     Skeleton skeleton;
-    double frame_time_s = 1.0 / 30.0;
+    double frame_time_s = 1.0 / 30.0; // 0 when the source did not say its rate (see has_frame_rate)
     std::vector<Eigen::Vector3d> root_translations;  // [frame]
     std::vector<Eigen::Quaterniond> local_rotations; // [frame * joint_count + joint]
     std::vector<Eigen::Vector3d> local_translations; // empty, or [frame * joint_count + joint]
 
     int frame_count() const { return static_cast<int>(root_translations.size()); }
+    // Whether the clip knows its rate. Positions per frame need none; speeds, timing and resampling do, and their
+    // callers refuse a clip without one (a capture whose file says `Frame Time: 0`).
+    bool has_frame_rate() const { return frame_time_s > 0.0; }
     double duration_s() const { return frame_count() > 0 ? (frame_count() - 1) * frame_time_s : 0.0; }
     bool has_local_translations() const { return !local_translations.empty(); }
     PoseView pose(int frame) const;
@@ -48,7 +51,7 @@ struct Clip {
 // clip local translations; frames appended before without them get the rest offsets.
 void clip_append_pose(Clip& clip, const PoseView& pose);
 
-// Writes the pose at time_s (clamped to the clip): slerp between the neighbouring frames' rotations, lerp
+// Writes the pose at time_s (clamped to the clip; frame 0 when the clip has no rate): slerp between the neighbouring frames' rotations, lerp
 // between translations. `pose` is resized once to the skeleton and reused across calls.
 void clip_sample(Pose& pose, const Clip& clip, double time_s);
 

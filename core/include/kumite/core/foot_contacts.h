@@ -29,7 +29,7 @@ struct ContactInterval {
 };
 
 // ankle_positions: [frame] world positions of one ankle, metres; standing_ankle_y: the height of a flat-footed
-// ankle in the same world. Returns the planted intervals in frame order.
+// ankle in the same world. Returns the planted intervals in frame order (none when frame_time_s is not > 0).
 std::vector<ContactInterval> foot_contacts_detect(const std::vector<Eigen::Vector3d>& ankle_positions, double frame_time_s,
                                                   double leg_length, double standing_ankle_y,
                                                   const FootContactThresholds& thresholds = {});

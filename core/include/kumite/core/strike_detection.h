@@ -38,7 +38,8 @@ struct StrikeSuggestion {
     StrikeLabels labels;     // proposed kind and height (strike_labels.h); none for reach peaks
 };
 
-// With `segment`, reports reach peaks of that part instead of punches and kicks.
+// With `segment`, reports reach peaks of that part instead of punches and kicks. A clip without a frame rate
+// (Clip::has_frame_rate) has no speeds: nothing is proposed; callers refuse it with a message first.
 std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy& anatomy,
                                              std::optional<BodyPart> segment = std::nullopt);
 

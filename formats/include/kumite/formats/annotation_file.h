@@ -9,6 +9,7 @@
 #include "kumite/core/strike_labels.h"
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -39,6 +40,9 @@ struct RawAnnotatedClip {
 struct RawAnnotations {
     int version = k_annotation_format_version;
     std::vector<RawAnnotatedClip> clips;
+    // Frame rates of captures whose files give none (`Frame Time: 0`), by clip `source`: file key
+    // "captures": {"<source>": {"fps": 100}}. Set by the animator in the window; the bake reads it.
+    std::map<std::string, double> capture_fps;
     std::string extra_json = "{}"; // unknown top-level keys
 
     // Content checks that need no capture: names unique, ranges ordered, strikes with segment and hit frame

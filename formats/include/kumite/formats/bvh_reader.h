@@ -11,7 +11,8 @@
 // BvhFile::warnings (refused instead with BvhReadOptions::strict): an End block named like a joint ("End ltoes",
 // read as End Site); frames not one per line (all values on one line, or frames wrapped over lines: the values
 // are read as one stream and cut into frames by the channel count); whole values after the frames 'Frames:'
-// declares (ignored). Still refused: too few values, a truncated hierarchy, a value that is not a number.
+// declares (ignored); `Frame Time: 0` or no 'Frame Time:' line (read with no rate: Clip::frame_time_s = 0, unless
+// BvhReadOptions::frame_rate_hz gives one). Still refused: too few values, a truncated hierarchy, a value that is not a number.
 
 #include "kumite/core/body_map.h"
 #include "kumite/core/clip.h"
@@ -51,6 +52,9 @@ struct BvhReadOptions {
     std::size_t max_file_bytes = std::size_t(1) << 30;
     int threads = 0; // frame parsing threads for large files: 0 = up to 2 when the machine has them, 1 = serial
     bool strict = false; // refuse what is otherwise read with a warning (see above)
+    // The capture's rate when the file gives none (`Frame Time: 0` or no such line), e.g. from --fps; it also
+    // replaces a rate the file states, with a warning. Must be > 0 and finite.
+    std::optional<double> frame_rate_hz;
 };
 
 struct BvhFile {
@@ -58,6 +62,7 @@ struct BvhFile {
     BvhLayout layout;
     LengthUnit unit;       // the file's unit (detected or forced)
     bool unit_detected = true;
+    bool frame_rate_in_file = true; // false: 'Frame Time: 0' or missing (the rate, if any, came from frame_rate_hz)
     double height_m = 0.0; // standing height after conversion
     BodyMap body_map;      // detected from the joint names
     std::vector<std::string> warnings; // "file:line: what was tolerated and how it was read", in file order
