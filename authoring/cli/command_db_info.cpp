@@ -35,7 +35,10 @@ const char* side_name(std::uint32_t side) {
 
 nlohmann::json summary_json(const MotionDatabase& database, double open_us, bool verified) {
     const MotionDatabaseView& db = database.view();
-    nlohmann::json strikes = {{"punch", {{"left", 0}, {"right", 0}}}, {"kick", {{"left", 0}, {"right", 0}}}};
+    nlohmann::json strikes = {{"punch", {{"left", 0}, {"right", 0}}},
+                              {"kick", {{"left", 0}, {"right", 0}}},
+                              {"knee", {{"left", 0}, {"right", 0}}},
+                              {"elbow", {{"left", 0}, {"right", 0}}}};
     nlohmann::json motions = nlohmann::json::object();
     nlohmann::json kinds = nlohmann::json::object(), heights = nlohmann::json::object();
     std::map<std::tuple<std::string, int, int, std::uint32_t>, int> labels; // semantics, kind, height, side

@@ -23,6 +23,10 @@ int limb_of_segment(BodyPart segment) {
     }
 }
 
+bool segment_strikes_with_middle(BodyPart segment) {
+    return segment == BodyPart::forearm_l || segment == BodyPart::forearm_r || segment == BodyPart::shin_l || segment == BodyPart::shin_r;
+}
+
 double constraint_ramp(double t, double t0, double tc, double recovery) {
     if (t >= tc) return recovery > 0.0 ? 1.0 - smoothstep((t - tc) / recovery) : (t == tc ? 1.0 : 0.0);
     if (t <= t0) return 0.0;
@@ -75,7 +79,8 @@ void StrikeAdapter::begin(const StrikePlan& plan, const MirFrame& current, const
     mir_frame_offset(m_initial_offset, current, m_clip_frame);
     m_limb = limb_of_segment(static_cast<BodyPart>(std::max(0, clip.segment)));
     m_arm = m_limb < 2;
-    m_effector_joint = m_rig.anatomy().limbs[m_limb].extremity;
+    m_middle = clip.segment >= 0 && segment_strikes_with_middle(static_cast<BodyPart>(clip.segment));
+    m_effector_joint = m_middle ? m_rig.anatomy().limbs[m_limb].middle : m_rig.anatomy().limbs[m_limb].extremity;
     // The clip's progress towards its hit, from its hit points (clip space: only ratios of distances are used).
     {
         auto hit_point = [&](int index) {
@@ -121,7 +126,7 @@ void StrikeAdapter::begin(const StrikePlan& plan, const MirFrame& current, const
     frame_mir(contact_index(), m_frame);
     LimbPins pins = m_pins;
     decode(m_scratch_pose, m_frame, pins);
-    m_offset_at_contact = plan.target_world - m_decoder.limb_targets()[m_limb];
+    m_offset_at_contact = plan.target_world - (m_middle ? m_decoder.model_positions()[m_effector_joint] : m_decoder.limb_targets()[m_limb]);
     // Where the strike stops: the target, or out of reach the closest point the effector gets to at the contact.
     m_stop_point = plan.target_world;
     m_impact = true;
@@ -161,14 +166,14 @@ double StrikeAdapter::offset_ramp(double index) const {
     return smoothstep(progress);
 }
 
-bool StrikeAdapter::stop_at_target(LimbPins& pins, double index) const {
-    if (!m_impact || index <= contact_index()) return false;
+Eigen::Vector3d StrikeAdapter::impact_correction(const Eigen::Vector3d& point, double index) const {
+    if (!m_impact || index <= contact_index()) return Eigen::Vector3d::Zero();
     // Past the stop point along approach direction k by g_k: the least move of the hit point that brings each g_k
     // down to softness * (1 - exp(-g_k / softness)) (C1 at g_k = 0, below the softness), and keeps the others
     // within the softness. What goes back or aside from every approach direction (the retraction) is kept.
     const double softness = m_settings.overshoot_softness_m;
-    if (softness <= 0.0) return false;
-    const Eigen::Vector3d displacement = m_decoder.limb_targets()[m_limb] - m_stop_point;
+    if (softness <= 0.0) return Eigen::Vector3d::Zero();
+    const Eigen::Vector3d displacement = point - m_stop_point;
     std::array<double, k_approach_chords + 1> bounds{};
     bool past = false;
     for (int k = 0; k < m_approach_count; ++k) {
@@ -176,12 +181,58 @@ bool StrikeAdapter::stop_at_target(LimbPins& pins, double index) const {
         bounds[k] = along > 0.0 ? softness * (1.0 - std::exp(-along / softness)) : softness;
         past = past || along > 0.0;
     }
-    if (!past) return false;
+    if (!past) return Eigen::Vector3d::Zero();
     const Eigen::Vector3d held = nearest_within_halfspaces(displacement, {m_approaches.data(), std::size_t(m_approach_count)},
                                                            {bounds.data(), std::size_t(m_approach_count)}, Eigen::Vector3d::Zero());
-    const Eigen::Vector3d correction = held - displacement;
+    return held - displacement;
+}
+
+bool StrikeAdapter::stop_at_target(LimbPins& pins, double index) const {
+    const Eigen::Vector3d correction = impact_correction(m_decoder.limb_targets()[m_limb], index);
+    if (correction.isZero()) return false;
     pins.extremity_offset_world[m_limb] += correction;
     return true;
+}
+
+int StrikeAdapter::place_middle(Pose& out, LimbPins& pins, const Eigen::Vector3d& wanted) {
+    // The clip's own limb at the current root: extremity from the frame, middle from the clip's swivel.
+    const LimbChain& chain = m_rig.anatomy().limbs[m_limb];
+    const Eigen::Vector3d root = m_decoder.model_positions()[chain.root];
+    const Eigen::Vector3d own_extremity = root + clip_reach(m_limb);
+    const Eigen::Vector3d reference = limb_swivel_reference(m_frame, m_limb);
+    const TwoBoneSolution own = two_bone_ik(root, own_extremity, chain.upper_length, chain.lower_length, m_clip_swivels[m_limb], reference);
+    // The middle joint as near `wanted` as the upper bone allows; the limb turned rigidly about its root to put it
+    // there, and the swivel that puts the middle joint on that point for the turned extremity.
+    const Eigen::Vector3d to_wanted = wanted - root, to_own = own.middle - root;
+    if (to_wanted.norm() < 1e-9 || to_own.norm() < 1e-9) return decode(out, m_frame, pins);
+    const Eigen::Vector3d middle = root + chain.upper_length * to_wanted.normalized();
+    const Eigen::Quaterniond turn = Eigen::Quaterniond::FromTwoVectors(to_own, middle - root);
+    const Eigen::Vector3d extremity = root + turn * (own.extremity - root);
+    pins.pinned[m_limb] = true;
+    pins.extremity_world[m_limb] = extremity;
+    m_frame.swivel[m_limb] = limb_swivel(root, middle, extremity, reference);
+    return decode(out, m_frame, pins);
+}
+
+int StrikeAdapter::decode_striking(Pose& out, LimbPins& pins, const Eigen::Vector3d& wanted) {
+    const int decodes = decode(out, m_frame, pins);
+    return m_middle ? decodes + place_middle(out, pins, wanted) : decodes;
+}
+
+AdaptedFrame StrikeAdapter::step_middle(double index, Pose& out, AdaptedFrame result, LimbPins& pins) {
+    // Where the clip's own middle joint is (the limb as the clip holds it), plus the ramped offset, held at the
+    // target after the contact.
+    const int middle_joint = m_effector_joint;
+    result.ccd_decodes = decode(out, m_frame, pins);
+    Eigen::Vector3d wanted = m_decoder.model_positions()[middle_joint] + result.ramp * m_offset_at_contact;
+    wanted += impact_correction(wanted, index);
+    result.wanted = wanted;
+    result.ccd_decodes += place_middle(out, pins, wanted);
+    result.effector = m_decoder.model_positions()[middle_joint];
+    if ((result.effector - result.wanted).norm() > m_settings.reach_tolerance_m) reach_with_trunk(result, pins, out);
+    if (index > contact_index()) result.past_target_m = past_stop(result.effector);
+    result.joint_violations = violations();
+    return result;
 }
 
 bool StrikeAdapter::keep_clip_bends(const LimbPins& pins) {
@@ -190,6 +241,7 @@ bool StrikeAdapter::keep_clip_bends(const LimbPins& pins) {
     const RestAnatomy& anatomy = m_rig.anatomy();
     const auto positions = m_decoder.model_positions();
     for (int limb = 0; limb < k_limb_count; ++limb) {
+        if (m_middle && limb == m_limb) continue; // place_middle gives it the clip's bend, turned
         const LimbChain& chain = anatomy.limbs[limb];
         const Eigen::Vector3d& root = positions[chain.root];
         const Eigen::Vector3d own = root + clip_reach(limb);
@@ -304,6 +356,7 @@ AdaptedFrame StrikeAdapter::step(double index, Pose& out) {
     m_clip_swivels = m_frame.swivel;
     result.ramp = offset_ramp(index);
     LimbPins pins = m_pins;
+    if (m_middle) return step_middle(index, out, result, pins);
     pins.extremity_offset_world[m_limb] = result.ramp * m_offset_at_contact;
     decode(out, m_frame, pins);
     const bool stopped = stop_at_target(pins, index);
@@ -326,8 +379,11 @@ AdaptedFrame StrikeAdapter::step(double index, Pose& out) {
 void StrikeAdapter::reach_with_trunk(AdaptedFrame& result, LimbPins& pins, Pose& out) {
     // Out of the limb's reach: turn the trunk towards the target, pivot by pivot, within the joint limits.
     result.reach = Reach::torso;
-    pins.pinned[m_limb] = true;
-    pins.extremity_world[m_limb] = result.wanted;
+    if (!m_middle) {
+        pins.pinned[m_limb] = true;
+        pins.extremity_world[m_limb] = result.wanted;
+    }
+    const double middle_reach = m_rig.anatomy().limbs[m_limb].upper_length;
     m_pivot_turns.fill(Eigen::Quaterniond::Identity());
     const RestAnatomy& anatomy = m_rig.anatomy();
     double gap = (result.effector - result.wanted).norm();
@@ -339,7 +395,12 @@ void StrikeAdapter::reach_with_trunk(AdaptedFrame& result, LimbPins& pins, Pose&
             // bring the root closer: turn the pivot so that the root swings towards the target.
             const Eigen::Vector3d centre = pivot_point(pivot);
             const Eigen::Vector3d root = m_decoder.model_positions()[anatomy.limbs[m_limb].root];
-            const Eigen::Vector3d from = root - centre, to = result.wanted - centre;
+            // A knee or elbow is always the upper bone's length from the root: the root goes to that distance from
+            // the target, nearer or farther.
+            const Eigen::Vector3d aim = m_middle && (root - result.wanted).norm() > 1e-9
+                                            ? Eigen::Vector3d(result.wanted + middle_reach * (root - result.wanted).normalized())
+                                            : result.wanted;
+            const Eigen::Vector3d from = root - centre, to = aim - centre;
             if (from.norm() < 1e-6 || to.norm() < 1e-6) continue;
             Eigen::Quaterniond total = Eigen::Quaterniond::FromTwoVectors(from, to) * m_pivot_turns[p];
             const double angle = rotation_angle(total), limit = pivot_limit(pivot);
@@ -354,7 +415,7 @@ void StrikeAdapter::reach_with_trunk(AdaptedFrame& result, LimbPins& pins, Pose&
             if (rotation_angle(turn) < 1e-5) continue; // held at its limit: the pose is unchanged, no decode
             turned = true;
             mir_frame_turn(m_frame, pivot, turn, centre, anatomy.leg_length, anatomy.ankle_height);
-            result.ccd_decodes += decode(out, m_frame, pins);
+            result.ccd_decodes += decode_striking(out, pins, result.wanted);
             result.effector = m_decoder.model_positions()[m_effector_joint];
             if ((result.effector - result.wanted).norm() <= m_settings.reach_tolerance_m) return;
         }

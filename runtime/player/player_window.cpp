@@ -21,7 +21,8 @@ struct KeyCommand {
     const char* command;
 };
 const KeyCommand k_keys[] = {{Qt::Key_1, "1", "punch"},      {Qt::Key_2, "2", "punch left"}, {Qt::Key_3, "3", "punch right"},
-                             {Qt::Key_4, "4", "kick"},       {Qt::Key_5, "5", "kick left"},  {Qt::Key_6, "6", "kick right"}};
+                             {Qt::Key_4, "4", "kick"},       {Qt::Key_5, "5", "kick left"},  {Qt::Key_6, "6", "kick right"},
+                             {Qt::Key_7, "7", "knee"},       {Qt::Key_8, "8", "elbow"}};
 
 // What the strike keys add to their order: J cycles the punch kind, K the kick kind, H the height (index 0: any).
 const char* const k_punch_kinds[] = {"", "straight", "hook", "uppercut"};
@@ -29,7 +30,7 @@ const char* const k_kick_kinds[] = {"", "front", "roundhouse", "side"};
 const char* const k_heights[] = {"", "low", "middle", "high"};
 
 const char* k_help =
-    "1/2/3 punch any/left/right   4/5/6 kick any/left/right   J punch kind   K kick kind   H height   C next character\n"
+    "1/2/3 punch any/left/right   4/5/6 kick any/left/right   7 knee   8 elbow   J punch kind   K kick kind   H height   C next character\n"
     "A aim latched / predicted   D defence on / off   B bones over the body   "
     "V orbit / head-coupled   S mono / side-by-side   F frame   Space pause   Esc quit   mouse: orbit, pan, zoom";
 
@@ -96,7 +97,7 @@ protected:
 private:
     // A strike key's order with the kind and height chosen with J, K and H.
     std::string with_labels(std::string line) const {
-        const char* kind = line.starts_with("kick") ? k_kick_kinds[m_kick_kind] : k_punch_kinds[m_punch_kind];
+        const char* kind = line.starts_with("kick") ? k_kick_kinds[m_kick_kind] : line.starts_with("punch") ? k_punch_kinds[m_punch_kind] : "";
         if (*kind) line += std::string(" ") + kind;
         if (*k_heights[m_height]) line += std::string(" ") + k_heights[m_height];
         return line;

@@ -109,7 +109,9 @@ void Bout::apply(std::string_view line, const std::string& where) {
     switch (command->verb) {
     case SupervisorCommand::Verb::punch:
     case SupervisorCommand::Verb::kick:
-    case SupervisorCommand::Verb::slash: {
+    case SupervisorCommand::Verb::slash:
+    case SupervisorCommand::Verb::knee:
+    case SupervisorCommand::Verb::elbow: {
         StrikeOrder order;
         order.side = command->side == "left" ? Side::left : command->side == "right" ? Side::right : Side::none;
         order.kind = command->kind;

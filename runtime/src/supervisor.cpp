@@ -4,6 +4,7 @@
 #include <arpa/inet.h>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <cerrno>
 #include <cstdio>
@@ -14,6 +15,30 @@
 #include <unistd.h>
 
 namespace kumite {
+
+const char* SupervisorCommand::semantics() const {
+    switch (verb) {
+    case Verb::kick: return "kick";
+    case Verb::slash: return "slash";
+    case Verb::knee: return "knee";
+    case Verb::elbow: return "elbow";
+    default: return "punch";
+    }
+}
+
+namespace {
+
+std::optional<SupervisorCommand::Verb> strike_verb(std::string_view word) {
+    using Verb = SupervisorCommand::Verb;
+    for (const Verb verb : {Verb::punch, Verb::kick, Verb::slash, Verb::knee, Verb::elbow}) {
+        SupervisorCommand command;
+        command.verb = verb;
+        if (word == command.semantics()) return verb;
+    }
+    return std::nullopt;
+}
+
+} // namespace
 
 Result<SupervisorCommand> supervisor_command_parse(std::string_view line) {
     auto next_word = [&line]() {
@@ -30,8 +55,8 @@ Result<SupervisorCommand> supervisor_command_parse(std::string_view line) {
     };
     const std::string_view verb = next_word();
     SupervisorCommand command;
-    if (verb == "punch" || verb == "kick" || verb == "slash") {
-        command.verb = verb == "punch" ? SupervisorCommand::Verb::punch : verb == "kick" ? SupervisorCommand::Verb::kick : SupervisorCommand::Verb::slash;
+    if (const std::optional<SupervisorCommand::Verb> strike = strike_verb(verb)) {
+        command.verb = *strike;
         // Side, kind and height, each at most once, in any order.
         for (std::string_view word = next_word(); !word.empty(); word = next_word()) {
             const std::string text(word);

@@ -79,6 +79,12 @@ struct AdaptationSettings {
 // for anything else).
 int limb_of_segment(BodyPart segment);
 
+// Whether a hit segment strikes with its limb's middle joint: the forearm's joint is the elbow (elbow strikes),
+// the shin's the knee (knee strikes). Their adaptation places that joint on the target: the limb turns about
+// its root as the clip holds it (the lower bone keeps its bend), and the trunk brings the root to the upper
+// bone's length from the target when the limb alone cannot.
+bool segment_strikes_with_middle(BodyPart segment);
+
 struct StrikePlan {
     int clip = -1;
     int start_frame = 0;
@@ -113,6 +119,7 @@ public:
     const StrikePlan& plan() const { return m_plan; }
     AdaptationSettings& settings() { return m_settings; }
     bool arm_strike() const { return m_arm; }
+    bool middle_strike() const { return m_middle; } // a knee or elbow strike (segment_strikes_with_middle)
     // Step 6 on (the default at begin()) or off; the fighter turns it off when the user is no longer at the target.
     void set_impact(bool impact) { m_impact = impact; }
     bool impact() const { return m_impact; }
@@ -121,6 +128,9 @@ public:
     // or out of reach the closest point it gets to at the contact. Found at begin().
     const Eigen::Vector3d& approach_direction() const { return m_approach; }
     const Eigen::Vector3d& stop_point() const { return m_stop_point; }
+    // Where the hit joint is at the contact frame in the clip as decoded on this character, before any offset:
+    // the strike's own landing point (the retrieval's contact point predicts it by scaling the actor's).
+    Eigen::Vector3d clip_contact_point() const { return m_plan.target_world - m_offset_at_contact; }
 
     int frame_count() const { return m_frame_count; }   // start .. the clip's last frame
     int contact_index() const { return m_plan.contact_frame - m_plan.start_frame; }
@@ -148,6 +158,14 @@ private:
     // Step 2's ramp at frame `index` (0 = the start frame).
     double offset_ramp(double index) const;
     bool stop_at_target(LimbPins& pins, double index) const;
+    // Step 6's move of a hit point at `point` that keeps it from passing the stop point (zero when it does not).
+    Eigen::Vector3d impact_correction(const Eigen::Vector3d& point, double index) const;
+    // Knee and elbow strikes: the frame with the limb's middle joint driven to `wanted` (see
+    // segment_strikes_with_middle), from the trunk of the last decode of m_frame. Returns the decodes made.
+    int place_middle(Pose& out, LimbPins& pins, const Eigen::Vector3d& wanted);
+    AdaptedFrame step_middle(double index, Pose& out, AdaptedFrame result, LimbPins& pins);
+    // Decodes m_frame with the striking limb placed on result.wanted (knee and elbow strikes) or as pinned.
+    int decode_striking(Pose& out, LimbPins& pins, const Eigen::Vector3d& wanted);
     // How far `point` is past the stop point along the farthest of the approach directions (0 when behind all).
     double past_stop(const Eigen::Vector3d& point) const;
     bool keep_clip_bends(const LimbPins& pins);
@@ -178,6 +196,7 @@ private:
     int m_limb = 0;          // the striking limb (Limb)
     int m_effector_joint = -1;
     bool m_arm = true;
+    bool m_middle = false;   // knee or elbow strike: the effector is the limb's middle joint
     std::array<bool, 2> m_support{};
     std::array<Eigen::Vector3d, 2> m_support_pins;
     LimbPins m_pins;
