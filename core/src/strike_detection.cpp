@@ -10,6 +10,10 @@ namespace {
 
 constexpr double k_min_gap_s = 0.3;
 constexpr double k_span_s = 1.0;
+constexpr double k_kick_extension = 0.85;  // leg straightness (hip-ankle over leg length) that makes a raised foot a kick
+constexpr double k_knee_rise = 0.3;        // knee above its standing height, in leg lengths, for a knee strike
+constexpr double k_block_above_head = 0.3;
+constexpr double k_punch_rise = 0.3;       // how much a punch's extension grows in the 0.6 s before its hit // a hand this far (arm lengths) above the head is blocking, not punching
 
 struct Peak {
     int frame = 0;
@@ -52,6 +56,8 @@ const char* strike_semantics_name(StrikeSemantics semantics) {
     switch (semantics) {
     case StrikeSemantics::punch: return "punch";
     case StrikeSemantics::kick: return "kick";
+    case StrikeSemantics::knee: return "knee";
+    case StrikeSemantics::elbow: return "elbow";
     case StrikeSemantics::reach: return "reach";
     }
     return "reach";
@@ -65,12 +71,13 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
     const double dt = clip.frame_time_s;
     std::vector<Eigen::Vector3d> positions(skeleton.joint_count());
     std::vector<Eigen::Quaterniond> rotations(skeleton.joint_count());
-    // Per frame: each limb's extension and forward reach, its extremity's position and height.
-    std::vector<std::array<double, k_limb_count>> extension(frames), reach(frames);
-    std::vector<std::array<Eigen::Vector3d, k_limb_count>> extremity(frames);
-    std::vector<double> part_distance(frames, 0.0);
+    // Per frame: each limb's extension and reach, its extremity's and middle joint's positions; the head's height.
+    std::vector<std::array<double, k_limb_count>> extension(frames), reach(frames), ahead(frames);
+    std::vector<std::array<Eigen::Vector3d, k_limb_count>> extremity(frames), middle(frames);
+    std::vector<double> head_y(frames, 0.0), part_distance(frames, 0.0);
     const int pelvis = map.joint(BodyPart::pelvis);
     const int chest = map.joint(BodyPart::chest);
+    const int head = map.joint(BodyPart::head);
     const int part_joint = segment ? map.joint(*segment) : -1;
     const double part_rest_distance = part_joint >= 0 ? (anatomy.rest_positions[part_joint] - anatomy.rest_positions[pelvis]).norm() : 1.0;
     for (int frame = 0; frame < frames; ++frame) {
@@ -94,12 +101,18 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
                     reach[frame][limb] = 0.0;
                 }
             } else {
-                Eigen::Vector3d forward = pelvis_forward;
+                // A kick goes forward, sideways or round: how far the ankle is from the hip on the floor plane, and
+                // how far ahead along the hips' heading (a leg swung back is negative).
+                Eigen::Vector3d away = offset, forward = pelvis_forward;
+                away.y() = 0.0;
                 forward.y() = 0.0;
-                reach[frame][limb] = offset.dot(forward.normalized()) / chain.length();
+                reach[frame][limb] = away.norm() / chain.length();
+                ahead[frame][limb] = forward.norm() > 1e-9 ? offset.dot(forward.normalized()) / chain.length() : 0.0;
             }
             extremity[frame][limb] = positions[chain.extremity];
+            middle[frame][limb] = positions[chain.middle];
         }
+        head_y[frame] = positions[head].y();
         if (part_joint >= 0) part_distance[frame] = (positions[part_joint] - positions[pelvis]).norm() / part_rest_distance;
     }
 
@@ -132,43 +145,88 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
         return strikes;
     }
 
+    const int speed_window = std::max(1, static_cast<int>(0.3 / dt));
     for (int limb = 0; limb < k_limb_count; ++limb) {
         const bool arm = limb < 2;
         const Side side = limb % 2 == 0 ? Side::left : Side::right;
-        const BodyPart part = limb_parts(static_cast<Limb>(limb))[2];
-        const double length = anatomy.limbs[limb].length();
-        std::vector<double> signal(frames);
-        for (int frame = 0; frame < frames; ++frame) {
-            signal[frame] = arm ? extension[frame][limb]
-                                : (extremity[frame][limb].y() - anatomy.floor_y - anatomy.ankle_height) / anatomy.leg_length;
-        }
-        const int speed_window = std::max(1, static_cast<int>(0.3 / dt));
-        const auto peaks = local_maxima(signal, half_window, min_gap, [&](int frame) {
-            if (arm) {
+        const std::array<BodyPart, 3> parts = limb_parts(static_cast<Limb>(limb));
+        const LimbChain& chain = anatomy.limbs[limb];
+        const double length = chain.length();
+        if (arm) {
+            std::vector<double> signal(frames);
+            for (int frame = 0; frame < frames; ++frame) signal[frame] = extension[frame][limb];
+            const auto peaks = local_maxima(signal, half_window, min_gap, [&](int frame) {
                 if (signal[frame] < 0.85 || reach[frame][limb] < 0.6) return false;
+                // A hand above the head at full extension is a rising block (age-uke), not a punch.
+                if (extremity[frame][limb].y() > head_y[frame] + k_block_above_head * length) return false;
+                // A punch is thrown: the arm extends from bent within the last moments. An arm held out in a guard
+                // (karate's kamae) or settling into it stays extended.
+                if (signal[frame] - signal[valley(signal, frame, -1, speed_window * 2)] < k_punch_rise) return false;
                 double fastest = 0.0;
                 for (int f = std::max(1, frame - speed_window); f <= frame; ++f) {
                     fastest = std::max(fastest, (extremity[f][limb] - extremity[f - 1][limb]).norm() / dt / length);
                 }
                 return fastest >= 1.5;
+            });
+            for (int frame : peaks) {
+                const double strength = std::min((signal[frame] - 0.85) / 0.15, (reach[frame][limb] - 0.6) / 0.6);
+                add(StrikeSemantics::punch, parts[2], side, frame, signal, 0.5 + 0.5 * strength);
             }
-            return signal[frame] >= 0.35 && reach[frame][limb] >= 0.3;
-        });
-        for (int frame : peaks) {
-            const double strength = arm ? std::min((signal[frame] - 0.85) / 0.15, (reach[frame][limb] - 0.6) / 0.6)
-                                        : std::min((signal[frame] - 0.35) / 0.35, (reach[frame][limb] - 0.3) / 0.3);
-            add(arm ? StrikeSemantics::punch : StrikeSemantics::kick, part, side, frame, signal, 0.5 + 0.5 * strength);
+            continue;
+        }
+        // Legs: the ankle raised above its standing height. Straightened at the top (the foot thrust out to a
+        // target) it is a kick, hit where the leg is straightest (its highest such frame); folded with the knee
+        // driven up it is a knee strike, hit where the knee is highest.
+        std::vector<double> raised(frames), knee_rise(frames);
+        const double standing_knee_y = anatomy.rest_positions[chain.middle].y();
+        for (int frame = 0; frame < frames; ++frame) {
+            raised[frame] = (extremity[frame][limb].y() - anatomy.floor_y - anatomy.ankle_height) / anatomy.leg_length;
+            knee_rise[frame] = (middle[frame][limb].y() - standing_knee_y) / anatomy.leg_length;
+        }
+        const auto peaks = local_maxima(raised, half_window, min_gap, [&](int frame) { return raised[frame] >= 0.35; });
+        for (int peak : peaks) {
+            // The raised interval around the peak: where the ankle stays above half the peak's height.
+            int first = peak, last = peak;
+            while (first > 0 && raised[first - 1] >= 0.5 * raised[peak]) --first;
+            while (last + 1 < frames && raised[last + 1] >= 0.5 * raised[peak]) ++last;
+            double straightest = 0.0;
+            for (int f = first; f <= last; ++f) straightest = std::max(straightest, extension[f][limb]);
+            if (straightest >= k_kick_extension) {
+                int hit = -1;
+                for (int f = first; f <= last; ++f) {
+                    if (extension[f][limb] >= straightest - 0.02 && (hit < 0 || raised[f] > raised[hit])) hit = f;
+                }
+                if (reach[hit][limb] < 0.3) continue; // straight up and down: not at anything
+                if (ahead[hit][limb] < -0.3) continue; // swung back (a step, a follow-through), not thrust out
+                const bool known = std::any_of(strikes.begin(), strikes.end(), [&](const StrikeSuggestion& other) {
+                    return other.semantics == StrikeSemantics::kick && other.segment == parts[2] && other.hit_frame == hit;
+                });
+                if (known) continue; // two peaks of one raised interval
+                const double strength = std::min((raised[hit] - 0.35) / 0.35, (reach[hit][limb] - 0.3) / 0.3);
+                add(StrikeSemantics::kick, parts[2], side, hit, raised, 0.5 + 0.5 * strength);
+                continue;
+            }
+            int hit = first;
+            for (int f = first; f <= last; ++f) {
+                if (knee_rise[f] > knee_rise[hit]) hit = f;
+            }
+            if (knee_rise[hit] < k_knee_rise) continue; // a high step, not a strike
+            add(StrikeSemantics::knee, parts[1], side, hit, knee_rise, 0.5 + 0.5 * std::min(1.0, (knee_rise[hit] - k_knee_rise) / 0.3));
         }
     }
-    // Arms fly out for balance during a kick: an arm peak inside a kick's span is not a punch.
+    // Arms fly out for balance during a kick, and reach for the opponent's head to pull it onto a knee (from up
+    // to 0.6 s before it): an arm peak then is not a punch.
+    const int grab_lead = static_cast<int>(std::lround(0.6 / dt));
     std::vector<StrikeSuggestion> kept;
     for (const StrikeSuggestion& strike : strikes) {
-        const bool during_kick = strike.semantics == StrikeSemantics::punch &&
-                                 std::any_of(strikes.begin(), strikes.end(), [&](const StrikeSuggestion& kick) {
-                                     return kick.semantics == StrikeSemantics::kick && strike.hit_frame >= kick.first_frame &&
-                                            strike.hit_frame <= kick.last_frame;
-                                 });
-        if (!during_kick) kept.push_back(strike);
+        const bool arm_strike = strike.semantics == StrikeSemantics::punch || strike.semantics == StrikeSemantics::elbow;
+        const bool during_leg_strike = arm_strike && std::any_of(strikes.begin(), strikes.end(), [&](const StrikeSuggestion& leg) {
+                                           const int from = leg.semantics == StrikeSemantics::knee ? std::min(leg.first_frame, leg.hit_frame - grab_lead)
+                                                                                                   : leg.first_frame;
+                                           return (leg.semantics == StrikeSemantics::kick || leg.semantics == StrikeSemantics::knee) &&
+                                                  strike.hit_frame >= from && strike.hit_frame <= leg.last_frame;
+                                       });
+        if (!during_leg_strike) kept.push_back(strike);
     }
     std::sort(kept.begin(), kept.end(), [](const StrikeSuggestion& a, const StrikeSuggestion& b) { return a.hit_frame < b.hit_frame; });
     for (StrikeSuggestion& strike : kept) {

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <map>
 
 using namespace kumite;
 
@@ -128,4 +129,50 @@ TEST_CASE("strike_labels: names, kinds per semantics and the height thresholds",
     CHECK(strike_height_of(0.5, thresholds) == StrikeHeight::low);
     CHECK(strike_height_of(1.1, thresholds) == StrikeHeight::middle);
     CHECK(strike_height_of(1.6, thresholds) == StrikeHeight::high);
+}
+
+TEST_CASE("strike_detection: karate techniques one per file: kicks and knees found on their side, blocks not taken for strikes",
+          "[core][corpus]") {
+    const std::filesystem::path folder = kumite::test::mocap_root() / "hachaj-shorinryu";
+    if (!std::filesystem::exists(folder)) {
+        WARN("missing " << folder);
+        return;
+    }
+    struct Tally {
+        int files = 0, found = 0, extra = 0;
+    };
+    std::map<std::string, Tally> tallies;
+    BvhReadOptions at_100; // the files say 'Frame Time: 0'; the same author's captures are at 100 fps
+    at_100.frame_rate_hz = 100.0;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.path().extension() != ".bvh") continue;
+        const std::string technique = name.substr(3, name.find("_left") != std::string::npos ? name.find("_left") - 3 : name.find("_right") - 3);
+        const Side side = name.find("_left_") != std::string::npos ? Side::left : Side::right;
+        Result<BvhFile> file = bvh_read_file(entry.path(), at_100);
+        REQUIRE(file.has_value());
+        Result<RestAnatomy> anatomy = rest_anatomy_build(file->clip, file->body_map);
+        REQUIRE(anatomy.has_value());
+        const std::vector<StrikeSuggestion> strikes = strikes_detect(file->clip, *anatomy);
+        const StrikeSemantics expected = technique == "hiza_geri" ? StrikeSemantics::knee : StrikeSemantics::kick;
+        const bool is_block = technique == "age_uke" || technique == "gedan_barai";
+        Tally& tally = tallies[technique];
+        ++tally.files;
+        int matched = 0;
+        for (const StrikeSuggestion& strike : strikes) {
+            const bool right = !is_block && technique != "empi" && strike.semantics == expected && strike.side == side;
+            matched += right;
+            tally.extra += !right;
+        }
+        tally.found += matched > 0;
+    }
+    for (const auto& [technique, tally] : tallies) {
+        INFO(technique << ": " << tally.found << " of " << tally.files << " found, " << tally.extra << " other proposals");
+        if (technique == "age_uke" || technique == "gedan_barai") {
+            CHECK(tally.extra <= tally.files / 20); // no block proposed as a strike (at most one in twenty files)
+        } else if (technique != "empi") {
+            CHECK(tally.found >= tally.files * 9 / 10);
+            CHECK(tally.extra <= tally.files / 10);
+        }
+    }
 }

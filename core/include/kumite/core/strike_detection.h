@@ -6,10 +6,17 @@
 //   (more than 0.6 arm length on the floor plane: fighters stand bladed, so not necessarily where the chest
 //   faces), no lower than 0.5 arm length below the shoulder (a low punch from a crouch reaches 0.4; an arm swung
 //   while walking hangs 0.8 below) and not behind it along the hips' heading, and not
-//   during a kick (arms fly out for balance then), after the hand moved at 1.5 arm lengths per second or more in the 0.3 s before; the hit frame is the
+//   during a kick (arms fly out for balance then), not above the head by 0.3 arm length (a rising block), thrown
+//   (the extension grew by 0.3 in the 0.6 s before: an arm held out in a karate guard is not), after the hand moved at 1.5 arm lengths per second or more in the 0.3 s before; the hit frame is the
 //   extension peak (full extension, where the hand's speed falls to a minimum);
-// - kick: the ankle rises above 0.35 leg length over its standing height in front of the hip (forward reach above
-//   0.3 leg length); the hit frame is the ankle's highest point;
+// - kick: the ankle rises above 0.35 leg length over its standing height, and in that raised interval the leg
+//   straightens (hip-ankle distance above 0.85 leg length) with the ankle away from the hip on the floor plane
+//   (0.3 leg length, any direction: front, side and round kicks) and at most 0.3 leg length behind it along the
+//   hips' heading (a side kick turns the hips away; a leg swung back is no kick); the
+//   hit frame is the highest frame among the straightest (full extension, where the foot would meet a target);
+// - knee: a raised ankle whose leg stays folded (below 0.85) with the knee 0.3 leg length above its standing
+//   height; the hit frame is the knee's highest point. Arm peaks from 0.6 s before a knee strike to its end are
+//   the hands pulling the opponent's head onto it, not punches;
 // - reach (any part asked for by name): peaks of the part's distance from the pelvis, relative to its rest
 //   distance, that stand 0.1 above the valleys on both sides.
 // Peaks closer than 0.3 s keep the stronger. A strike spans from the extension valley before the hit to the one
@@ -25,7 +32,7 @@
 
 namespace kumite {
 
-enum class StrikeSemantics { punch, kick, reach };
+enum class StrikeSemantics { punch, kick, knee, elbow, reach };
 
 struct StrikeSuggestion {
     StrikeSemantics semantics = StrikeSemantics::punch;
