@@ -3,6 +3,7 @@
 #include "bake_clip.h"
 #include "parallel_for.h"
 
+#include "kumite/core/body_map.h"
 #include "kumite/core/pose_clusters.h"
 
 #include <chrono>
@@ -53,6 +54,24 @@ void assemble_clusters(MotionDatabaseContent& db, const PoseClusters& clusters) 
     }
 }
 
+// Leg strikes start only where the support foot is planted (retrieval.h): one whose support foot never is,
+// from its first frame to its hit, bakes but can never be chosen.
+void warn_unservable_strikes(const MotionDatabaseView& db, std::string_view annotations_name, std::vector<std::string>& warnings) {
+    for (const DbClip& clip : db.clips) {
+        if (!db_clip_is_strike(clip) || clip.hit_frame < 0) continue;
+        const bool arm = clip.segment >= static_cast<int>(BodyPart::clavicle_l) && clip.segment <= static_cast<int>(BodyPart::hand_r);
+        if (arm) continue;
+        const std::string_view part = body_part_name(static_cast<BodyPart>(clip.segment));
+        const std::uint32_t support = part.ends_with("_l") ? db_pose_right_foot_planted : db_pose_left_foot_planted;
+        bool planted = false;
+        for (int frame = 0; frame <= clip.hit_frame && !planted; ++frame) planted = db.poses[clip.first_pose + frame].flags & support;
+        if (!planted) {
+            warnings.push_back(std::string(annotations_name) + ": clip " + std::string(db.string(clip.name)) +
+                               ": the support foot is never planted before the hit; retrieval will never start this strike");
+        }
+    }
+}
+
 } // namespace
 
 Result<BakeResult> bake_database(const RawAnnotations& annotations, std::string_view annotations_name, const BakeOptions& options) {
@@ -70,6 +89,8 @@ Result<BakeResult> bake_database(const RawAnnotations& annotations, std::string_
                                                              [&](int done, int total) { report("reading captures", done, total); });
     if (!read) return read.error();
     std::vector<BakeSource>& sources = *read;
+    BakeResult result;
+    for (const BakeSource& source : sources) result.warnings.insert(result.warnings.end(), source.notes.begin(), source.notes.end());
     const std::vector<BakeActor> actors = bake_find_actors(sources);
 
     std::vector<ClipJob> clip_jobs;
@@ -97,7 +118,6 @@ Result<BakeResult> bake_database(const RawAnnotations& annotations, std::string_
         report("encoding clips", ++clips_done, static_cast<int>(clip_jobs.size()));
     });
 
-    BakeResult result;
     MotionDatabaseContent& db = result.database;
     for (const BakeActor& actor : actors) {
         DbActor record = bake_actor_record(sources[actor.first_source]);
@@ -105,6 +125,7 @@ Result<BakeResult> bake_database(const RawAnnotations& annotations, std::string_
         db.actors.push_back(record);
     }
     assemble_clips(db, baked, clip_jobs, annotations);
+    warn_unservable_strikes(db.view(), annotations_name, result.warnings);
 
     const PoseClusters clusters = pose_clusters_compute(db.features, options.clusters, options.seed, options.max_kmeans_iterations, jobs,
                                                         [&](int iteration) { report("clustering poses", iteration, options.max_kmeans_iterations); });

@@ -45,6 +45,9 @@ struct BakeResult {
     MotionDatabaseContent database;
     std::vector<BakedMotion> motions; // [clip] when keep_motion
     double seconds = 0.0;
+    // What baked but will not serve as annotated, one line each naming the clip (a leg strike whose support foot
+    // is never planted before its hit: retrieval never starts it from a standing fighter).
+    std::vector<std::string> warnings;
 };
 
 // Errors name the annotation file, the clip and what is wrong (a missing capture, a frame past its end, a

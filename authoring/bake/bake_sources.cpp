@@ -2,7 +2,10 @@
 
 #include "parallel_for.h"
 
+#include "kumite/core/root_from_feet.h"
 #include "kumite/formats/capture_file.h"
+
+#include <cstdio>
 
 #include <map>
 #include <mutex>
@@ -41,7 +44,7 @@ Result<std::vector<BakeSource>> bake_read_sources(const RawAnnotations& annotati
     for (const RawAnnotatedClip& clip : annotations.clips) {
         auto [it, inserted] = index_of.emplace(clip.source, static_cast<int>(sources.size()));
         if (inserted) {
-            sources.push_back({clip.source, resolve(clip.source, options.mocap_root), {}, {}, {}, -1});
+            sources.push_back({clip.source, resolve(clip.source, options.mocap_root), {}, {}, {}, -1, {}});
             mirrored.push_back(false);
         }
         if (clip.mirror) mirrored[it->second] = true;
@@ -72,6 +75,17 @@ Result<std::vector<BakeSource>> bake_read_sources(const RawAnnotations& annotati
         Result<RestAnatomy> anatomy = rest_anatomy_build(source.file.clip, source.file.body_map);
         if (!anatomy) return fail(source.path.string() + ": " + anatomy.error().message);
         source.anatomy = std::move(*anatomy);
+        if (root_is_pinned(source.file.clip)) {
+            const RootFromFeetReport moved = root_motion_from_feet(source.file.clip, source.anatomy.limbs[int(Limb::leg_l)].extremity,
+                                                                    source.anatomy.limbs[int(Limb::leg_r)].extremity);
+            if (moved.support_slide_before_m > 0.0) {
+                char line[256];
+                std::snprintf(line, sizeof line,
+                              ": the root never moves (the foot it stands on slid %.0f cm); the root now follows the lower foot "
+                              "(moving up to %.0f cm)", 100.0 * moved.support_slide_before_m, 100.0 * moved.root_travel_m);
+                source.notes.push_back(source.path.string() + line);
+            }
+        }
         if (mirrored[index]) {
             std::vector<bool> animated;
             for (const BvhJointChannels& joint : source.file.layout.joints) animated.push_back(joint.has_position());

@@ -12,6 +12,7 @@
 #include <catch2/catch.hpp>
 
 #include <fstream>
+#include <set>
 
 using namespace kumite;
 
@@ -195,4 +196,29 @@ TEST_CASE("bake: the golden database opens, verifies, and is what the bake makes
     REQUIRE(baked.has_value());
     INFO("if the bake changed on purpose, run scripts/make_golden_database.sh (and bump the format version when the layout changed)");
     CHECK(motion_database_bytes(baked->database.view()) == read_bytes(golden));
+}
+
+TEST_CASE("bake: the reference annotations bake without an unservable strike, pinned roots repaired and said", "[bake][corpus]") {
+    if (!std::filesystem::exists(kumite::test::mocap_root() / "hachaj-shorinryu")) return;
+    Result<RawAnnotations> annotations = annotations_read_file(kumite::test::source_dir() / "data/annotations/reference.json");
+    REQUIRE(annotations);
+    bake::BakeOptions options;
+    options.mocap_root = kumite::test::mocap_root();
+    Result<bake::BakeResult> baked = bake::bake_database(*annotations, "reference.json", options);
+    REQUIRE(baked);
+    int repaired = 0;
+    for (const std::string& warning : baked->warnings) {
+        INFO(warning);
+        CHECK(warning.find("never planted") == std::string::npos); // every leg strike can start somewhere
+        if (warning.find("root never moves") != std::string::npos) {
+            CHECK(warning.find("hachaj-shorinryu/") != std::string::npos); // the only captures with a pinned root
+            ++repaired;
+        }
+    }
+    std::set<std::string> shorinryu_sources;
+    for (const RawAnnotatedClip& clip : annotations->clips) {
+        if (clip.source.starts_with("hachaj-shorinryu/")) shorinryu_sources.insert(clip.source);
+    }
+    CHECK(repaired == int(shorinryu_sources.size()));
+    CHECK(repaired >= 150);
 }
