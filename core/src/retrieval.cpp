@@ -50,7 +50,9 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
         info.height = static_cast<StrikeHeight>(clip.height % k_strike_height_count);
         info.arm_strike = is_arm_part(clip.segment);
         info.first_start = info.end_start = static_cast<int>(clip.first_pose);
-        if (db_clip_is_strike(clip)) info.end_start += std::max(0, clip.hit_frame - m_settings.min_lead_frames + 1);
+        // Starts lead the hit by min_lead_frames; a strike whose whole wind-up is shorter (a snap elbow from
+        // guard) starts at its first frame, never mid-flight.
+        if (db_clip_is_strike(clip)) info.end_start += std::max(1, clip.hit_frame - m_settings.min_lead_frames + 1);
         const DbActor& actor = m_db.actors[clip.actor];
         info.actor_leg_length = actor.leg_length_m;
         const bool by_arm = m_settings.scaling == RetrievalScaling::limb_length && info.arm_strike;
@@ -58,6 +60,9 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
         if (db_clip_is_strike(clip) && !info.arm_strike) {
             const bool left_leg = body_part_name(static_cast<BodyPart>(clip.segment)).ends_with("_l");
             info.support_foot = left_leg ? db_pose_right_foot_planted : db_pose_left_foot_planted;
+            for (int frame = clip.hit_frame; frame >= 0 && info.support_down_until < 0; --frame) {
+                if (m_db.poses[clip.first_pose + frame].flags & info.support_foot) info.support_down_until = int(clip.first_pose) + frame;
+            }
         }
     }
 
@@ -101,7 +106,7 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
             candidate.distance_to_centroid = m_poses[pose].distance_to_centroid;
             candidate.pose = pose;
             candidate.support_foot = clip.support_foot;
-            candidate.start_flags = start.flags;
+            candidate.start_flags = start_flags(clip, int(pose));
             grouped.emplace_back(static_cast<std::uint32_t>(std::size_t(group_cluster) * m_order_keys + key), candidate);
         }
     }
@@ -394,7 +399,7 @@ RetrievalResult Retriever::query_exhaustive(const RetrievalQuery& query) const {
     for (const ClipInfo& clip : m_clips) {
         if (!obeys(clip, query)) continue;
         for (int pose = clip.first_start; pose < clip.end_start; ++pose) {
-            if (clip.support_foot && !support_planted(clip.support_foot, m_db.poses[pose].flags, query)) continue;
+            if (clip.support_foot && !support_planted(clip.support_foot, start_flags(clip, pose), query)) continue;
             if (!query.excluded_clips.empty() && excluded(static_cast<std::uint32_t>(pose), query)) continue;
             ++best.counts.candidates_seen;
             ++best.counts.pose_scored;

@@ -3,7 +3,9 @@
 // and a target, from a mapped motion database.
 //
 // Scoring. A candidate is a start pose of a strike clip of the ordered semantics and side, at least
-// `min_lead_frames` before its hit frame. Its score is
+// `min_lead_frames` before its hit frame (or the clip's first pose, when its whole lead is shorter); a leg
+// strike's start also needs the character's support foot planted, and the clip's planted there or before the
+// hit. Its score is
 //     d = w_pose * d_pose + w_target * d_target / leg_length_character
 // where d_pose is Kovar's distance between the current pose's feature and the candidate's, as an RMS over the
 // feature's points (leg lengths), and d_target the distance in metres between the target and the hit segment's
@@ -157,6 +159,7 @@ private:
         double actor_leg_length = 1.0;
         double actor_scale_length = 1.0; // the actor length that scaling divides by (leg, or the striking limb)
         std::uint32_t support_foot = 0;  // DbPoseFlags bit of a leg strike's support foot, 0 for arm strikes
+        int support_down_until = -1;     // the last pose up to the hit where the support foot is planted, -1: none
     };
     struct PoseInfo {
         float distance_to_centroid = 0.0f; // sqrt(Kovar / points), leg lengths
@@ -181,6 +184,12 @@ private:
     bool obeys(const ClipInfo& clip, const RetrievalQuery& query) const;
     static bool support_planted(std::uint32_t support_foot, std::uint32_t start_flags, const RetrievalQuery& query) {
         return (support_foot & start_flags & query.planted_feet) == support_foot;
+    }
+    // A start's flags, with a leg strike's support foot counted planted when it comes down before the hit (a
+    // fighter who starts on the ball of that foot: the adaptation keeps it on the floor).
+    std::uint32_t start_flags(const ClipInfo& clip, int pose) const {
+        const std::uint32_t flags = m_db.poses[pose].flags;
+        return pose <= clip.support_down_until ? flags | clip.support_foot : flags;
     }
     double scale_to_character(const ClipInfo& clip, const CharacterSize& character) const;
     // Scores one start exactly; returns false when its score cannot beat `best` (left untouched then).
