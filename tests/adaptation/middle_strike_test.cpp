@@ -1,5 +1,6 @@
 // Knee and elbow strikes on the reference database (hachaj-shorinryu's hiza-geri and empi): the knee or the elbow,
-// not the foot or the hand, lands on a target inside its reach on every shipped character, and stays there: no
+// not the foot or the hand, lands on a target inside its reach (the upper bone's length from the hip or shoulder,
+// a few centimetres from where the clip lands) on every shipped character, and stays there: no
 // sweep past the target, no joint bent the wrong way, bones exact, the support foot down.
 
 #include "kumite/core/strike_adaptation.h"
@@ -11,6 +12,11 @@
 using namespace kumite;
 
 namespace {
+
+Limb limb_of_middle_strike(const char* semantics, Side side) {
+    const bool left = side == Side::left;
+    return std::string(semantics) == "knee" ? (left ? Limb::leg_l : Limb::leg_r) : (left ? Limb::arm_l : Limb::arm_r);
+}
 
 struct Landing {
     double contact_error_m = 0.0;
@@ -32,7 +38,14 @@ Landing strike(const kumite::test::StandingCharacter& character, const Retriever
     StrikeAdapter adapter(*character.rig, db);
     adapter.begin({natural.clip, natural.start_frame, natural.contact_frame, natural.clip_to_world, natural.contact_point_world},
                   character.mir, {true, true}, character.ankles);
-    const Eigen::Vector3d target = adapter.clip_contact_point() + offset;
+    // Inside reach: the knee or elbow stays the upper bone's length from the hip or shoulder, so the offset target
+    // goes onto that sphere about the root where the clip's own strike lands.
+    Pose natural_pose;
+    adapter.step(adapter.contact_index(), natural_pose);
+    const Limb limb = limb_of_middle_strike(semantics, side);
+    const LimbChain& chain = character.anatomy.limbs[int(limb)];
+    const Eigen::Vector3d root = adapter.positions()[chain.root];
+    const Eigen::Vector3d target = root + chain.upper_length * (adapter.clip_contact_point() + offset - root).normalized();
     adapter.begin({natural.clip, natural.start_frame, natural.contact_frame, natural.clip_to_world, target}, character.mir, {true, true},
                   character.ankles);
     REQUIRE(adapter.middle_strike());
@@ -74,9 +87,7 @@ TEST_CASE("middle strikes: knees and elbows land on targets inside their reach o
                                                       Eigen::Vector3d(-0.05, 0.04, -0.04)}) {
                     INFO(name << " " << semantics << (side == Side::left ? " left" : " right") << " offset " << offset.transpose());
                     const Landing landing = strike(character, retriever, db, semantics, side, offset);
-                    const int middle = character.anatomy.limbs[std::string(semantics) == "knee" ? (side == Side::left ? 2 : 3)
-                                                                                                 : (side == Side::left ? 0 : 1)]
-                                           .middle;
+                    const int middle = character.anatomy.limbs[int(limb_of_middle_strike(semantics, side))].middle;
                     CHECK(landing.effector == middle); // the knee or the elbow strikes, not the foot or the hand
                     CHECK(landing.contact_error_m <= 0.01);
                     CHECK(landing.past_target_m <= 0.03);

@@ -472,7 +472,7 @@ TEST_CASE("cli: play runs a headless bout: report keys, events, a recording, the
     const std::string script = (kumite::test::source_dir() / "data/bouts/demo.txt").string();
     auto play = [&](const std::string& name) {
         return run_command(kumite_exe() + " play " + db + " --character brawler --tracker simulate:still --commands script:" + script +
-                           " --headless --duration 12 --seed 5 --events " + (folder / (name + ".jsonl")).string() + " --report " +
+                           " --headless --duration 13 --seed 5 --events " + (folder / (name + ".jsonl")).string() + " --report " +
                            (folder / (name + ".json")).string() + " --record " + (folder / (name + ".bvh")).string());
     };
     const auto first = play("a");
@@ -485,13 +485,13 @@ TEST_CASE("cli: play runs a headless bout: report keys, events, a recording, the
                             "tracker_packets", "tracker_rejected", "command_to_strike_frames"}) {
         CHECK(report.contains(key));
     }
-    CHECK(report["frames"] == 720);
-    CHECK(report["orders"] == 4); // the demo script's orders before 12 s
+    CHECK(report["frames"] == 780);
+    CHECK(report["orders"] == 4); // the demo script's orders before 13 s (the last, at 11.5 s, lands by then)
     CHECK(report["strikes"] == report["orders"]);
     CHECK(report["command_to_strike_frames"]["max"].get<double>() <= 1.0);
     const auto inspect = run_command(kumite_exe() + " inspect " + (folder / "a.bvh").string() + " --json");
     REQUIRE(inspect.status == 0);
-    CHECK(nlohmann::json::parse(inspect.out)["frames"] == 720);
+    CHECK(nlohmann::json::parse(inspect.out)["frames"] == 780);
     std::size_t strike_lines = 0;
     std::istringstream lines(file_bytes(folder / "a.jsonl"));
     for (std::string line; std::getline(lines, line);) {

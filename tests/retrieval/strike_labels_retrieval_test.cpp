@@ -72,14 +72,14 @@ TEST_CASE("retrieval: an order the database cannot serve finds nothing, and coun
     RetrievalWorkspace workspace = retriever.make_workspace();
     const kumite::test::StandingCharacter standing("brawler", db);
     const int punch = retriever.semantics_id("punch");
-    bool has_hook = false;
-    for (const DbClip& clip : db.clips) has_hook = has_hook || (db.string(clip.semantics) == "punch" && clip.strike_kind() == StrikeKind::hook);
-    REQUIRE_FALSE(has_hook); // the shared captures hold no hook (if one is annotated, pick another missing kind)
+    bool has_uppercut = false;
+    for (const DbClip& clip : db.clips) has_uppercut = has_uppercut || (db.string(clip.semantics) == "punch" && clip.strike_kind() == StrikeKind::uppercut);
+    REQUIRE_FALSE(has_uppercut); // the shared captures hold no clear uppercut (if one is annotated, pick another missing kind)
     RetrievalQuery query = standing.query;
     query.semantics = punch;
-    query.kind = StrikeKind::hook;
+    query.kind = StrikeKind::uppercut;
     query.target_world = Eigen::Vector3d(0.0, standing.head_y, 0.6);
-    CHECK(retriever.candidate_count(punch, Side::none, StrikeKind::hook) == 0);
+    CHECK(retriever.candidate_count(punch, Side::none, StrikeKind::uppercut) == 0);
     CHECK_FALSE(retriever.query(query, workspace).found);
     CHECK_FALSE(retriever.query_exhaustive(query).found);
     // Unlabelled orders still see every punch.
