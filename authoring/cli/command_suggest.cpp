@@ -18,16 +18,19 @@ const CommandSpec& suggest_spec() {
         "suggest",
         "FILE.bvh... [--segment PART] [--json]",
         "Proposes the strikes in captures: punches (hand extension peaks in front of the chest after a fast\n"
-        "move) and kicks (ankle raised in front of the hip), each with its hit frame and span. With --segment\n"
+        "move), kicks (a straight leg raised, its foot reaching out), knee strikes (a folded leg whose knee rises)\n"
+        "and elbow strikes (an elbow driven up with the fist folded by the head), each with its hit frame and span. With --segment\n"
         "PART, reports the extension peaks of that body part instead (semantics 'reach'). --write-annotations\n"
         "turns every suggestion into a clip (mirrored too), with paths relative to --mocap-root when under it.\n"
         "Each strike also gets a proposed kind (straight/hook/uppercut, front/roundhouse/side) and height\n"
         "(low/middle/high). --compare ANNOTATIONS.json proposes kind and height for every labelled strike of an\n"
-        "annotation file and prints how often they agree with its labels, with the confusion tables.",
+        "annotation file and prints how often they agree with its labels, with the confusion tables. With captures\n"
+        "and --compare, it scores the detection instead: per folder, recall and precision against the file's\n"
+        "strikes of those captures (same semantics and side, hits within 0.25 s), kind agreement, confusion tables.",
         0, 100000,
         {{"segment", "PART", "a body part (hand_l, foot_r, head, ...): report its extension peaks"},
          {"write-annotations", "OUT.json", "write every suggestion as a clip of an annotation file ready for bake"},
-         {"compare", "ANNOTATIONS.json", "propose kind and height for the file's strikes and compare them with its labels"},
+         {"compare", "ANNOTATIONS.json", "compare with the file's labels (alone), or score the detection on the captures given"},
          unit_flag(), strict_flag(), fps_flag(), mocap_root_flag(), body_map_flag(), json_flag()}};
     return spec;
 }
@@ -57,13 +60,18 @@ nlohmann::json strikes_json(const std::vector<StrikeSuggestion>& strikes) {
 } // namespace
 
 int run_compare(const std::string& annotations_path, const CaptureOptions& options, bool as_json); // below
+int run_detection_compare(const std::vector<std::string>& paths, const std::string& annotations_path, const CaptureOptions& options,
+                          bool as_json); // suggest_detection.cpp
 
 int run_suggest(int argc, char** argv) {
     Arguments arguments;
     if (std::optional<int> status = parse_command_line(suggest_spec(), argc, argv, arguments)) return *status;
     Result<CaptureOptions> options = capture_options_from(arguments);
     if (!options) return usage_error(suggest_spec(), options.error().message);
-    if (const std::optional<std::string> compare = arguments.value("compare")) return run_compare(*compare, *options, arguments.has("json"));
+    if (const std::optional<std::string> compare = arguments.value("compare")) {
+        if (!arguments.positionals.empty()) return run_detection_compare(arguments.positionals, *compare, *options, arguments.has("json"));
+        return run_compare(*compare, *options, arguments.has("json"));
+    }
     if (arguments.positionals.empty()) return usage_error(suggest_spec(), "give captures to look at, or --compare ANNOTATIONS.json");
     std::optional<BodyPart> segment;
     if (const std::optional<std::string> name = arguments.value("segment")) {

@@ -1,5 +1,7 @@
 #include "kumite/core/strike_detection.h"
 
+#include "kumite/core/root_from_feet.h"
+
 #include "kumite/core/forward_kinematics.h"
 
 #include <algorithm>
@@ -13,6 +15,8 @@ constexpr double k_span_s = 1.0;
 constexpr double k_kick_extension = 0.85;  // leg straightness (hip-ankle over leg length) that makes a raised foot a kick
 constexpr double k_knee_rise = 0.3;        // knee above its standing height, in leg lengths, for a knee strike
 constexpr double k_block_above_head = 0.3;
+constexpr double k_elbow_rise = 0.8;       // how far an elbow strike lifts the elbow (upper-arm lengths) within 0.6 s
+constexpr double k_elbow_folded_deg = 84.0; // an elbow opened wider than this, its wrist up by the head, is a rising block
 constexpr double k_punch_rise = 0.3;       // how much a punch's extension grows in the 0.6 s before its hit // a hand this far (arm lengths) above the head is blocking, not punching
 
 struct Peak {
@@ -64,6 +68,13 @@ const char* strike_semantics_name(StrikeSemantics semantics) {
 }
 
 std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy& anatomy, std::optional<BodyPart> segment) {
+    if (root_is_pinned(clip)) {
+        // Read as the bake reads it: the root follows the foot the body stands on (root_from_feet.h), so that
+        // heights are over the floor and not over a foot that hangs under pinned hips.
+        Clip moved = clip;
+        root_motion_from_feet(moved, anatomy.limbs[int(Limb::leg_l)].extremity, anatomy.limbs[int(Limb::leg_r)].extremity);
+        return strikes_detect(moved, anatomy, segment);
+    }
     const Skeleton& skeleton = clip.skeleton;
     const BodyMap& map = anatomy.body_map;
     const int frames = clip.frame_count();
@@ -73,7 +84,7 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
     std::vector<Eigen::Quaterniond> rotations(skeleton.joint_count());
     // Per frame: each limb's extension and reach, its extremity's and middle joint's positions; the head's height.
     std::vector<std::array<double, k_limb_count>> extension(frames), reach(frames), ahead(frames);
-    std::vector<std::array<Eigen::Vector3d, k_limb_count>> extremity(frames), middle(frames);
+    std::vector<std::array<Eigen::Vector3d, k_limb_count>> extremity(frames), middle(frames), root(frames);
     std::vector<double> head_y(frames, 0.0), part_distance(frames, 0.0);
     const int pelvis = map.joint(BodyPart::pelvis);
     const int chest = map.joint(BodyPart::chest);
@@ -111,6 +122,7 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
             }
             extremity[frame][limb] = positions[chain.extremity];
             middle[frame][limb] = positions[chain.middle];
+            root[frame][limb] = positions[chain.root];
         }
         head_y[frame] = positions[head].y();
         if (part_joint >= 0) part_distance[frame] = (positions[part_joint] - positions[pelvis]).norm() / part_rest_distance;
@@ -146,6 +158,49 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
     }
 
     const int speed_window = std::max(1, static_cast<int>(0.3 / dt));
+    // Elbow strikes: the elbow driven up from below its shoulder to above it, fast, with the forearm folded so
+    // that the fist stays by the head; hit where the rise stops (over the shoulder: after its fastest frame, the
+    // first frame whose rise falls under a fifth of the fastest's). A
+    // rising block (age-uke) raises the elbow too, but opens the arm above the head: an elbow opened past
+    // k_elbow_folded_deg with the wrist up at the head's height is a block.
+    auto detect_elbow_strikes = [&](int limb, Side side, BodyPart part) {
+        const LimbChain& chain = anatomy.limbs[limb];
+        std::vector<double> lift(frames);
+        for (int frame = 0; frame < frames; ++frame) lift[frame] = (middle[frame][limb].y() - root[frame][limb].y()) / chain.upper_length;
+        const int rise_window = std::max(1, static_cast<int>(0.6 / dt));
+        const auto peaks = local_maxima(lift, half_window, min_gap, [&](int frame) {
+            if (lift[frame] < 0.0) return false; // not above the shoulder
+            const int low = valley(lift, frame, -1, rise_window);
+            if (lift[frame] - lift[low] < k_elbow_rise) return false;
+            double fastest = 0.0;
+            for (int f = std::max(1, frame - speed_window); f <= frame; ++f) {
+                fastest = std::max(fastest, (middle[f][limb] - middle[f - 1][limb]).norm() / dt / chain.upper_length);
+            }
+            return fastest >= 2.0;
+        });
+        for (int peak : peaks) {
+            // Where the rise stops: after its fastest frame, the first whose rise is under a fifth of that.
+            const int low = valley(lift, peak, -1, rise_window);
+            int fastest = low + 1;
+            for (int f = low + 1; f <= peak; ++f) {
+                if (lift[f] - lift[f - 1] > lift[fastest] - lift[fastest - 1]) fastest = f;
+            }
+            int hit = fastest;
+            while (hit < peak && lift[hit + 1] - lift[hit] >= 0.2 * (lift[fastest] - lift[fastest - 1])) ++hit;
+            // How the arm ends up at the top of the rise: a block opens there.
+            const Eigen::Vector3d upper = root[peak][limb] - middle[peak][limb], lower = extremity[peak][limb] - middle[peak][limb];
+            const double folded_deg = std::acos(std::clamp(upper.normalized().dot(lower.normalized()), -1.0, 1.0)) * 180.0 / 3.14159265358979;
+            const bool wrist_up = extremity[peak][limb].y() > head_y[peak] - 0.04;
+            const bool wrist_above = extremity[peak][limb].y() > head_y[peak] + 0.1;
+            if ((folded_deg >= k_elbow_folded_deg && wrist_up) || wrist_above) continue; // a rising block
+            if (folded_deg >= 110.0) continue;                          // an arm raised open: a wave, a reach
+            const bool known = std::any_of(strikes.begin(), strikes.end(), [&](const StrikeSuggestion& other) {
+                return other.semantics == StrikeSemantics::elbow && other.segment == part && std::abs(other.hit_frame - hit) < 2 * min_gap;
+            });
+            if (known) continue; // a second top of one rise
+            add(StrikeSemantics::elbow, part, side, hit, lift, 0.5 + 0.5 * std::min(1.0, (lift[peak] - lift[valley(lift, peak, -1, rise_window)] - k_elbow_rise) / 0.5));
+        }
+    };
     for (int limb = 0; limb < k_limb_count; ++limb) {
         const bool arm = limb < 2;
         const Side side = limb % 2 == 0 ? Side::left : Side::right;
@@ -155,10 +210,17 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
         if (arm) {
             std::vector<double> signal(frames);
             for (int frame = 0; frame < frames; ++frame) signal[frame] = extension[frame][limb];
+            const int settle = std::max(1, static_cast<int>(std::lround(0.1 / dt)));
             const auto peaks = local_maxima(signal, half_window, min_gap, [&](int frame) {
                 if (signal[frame] < 0.85 || reach[frame][limb] < 0.6) return false;
-                // A hand above the head at full extension is a rising block (age-uke), not a punch.
+                // The capture must go on a little after a hit: a hand still extending as the file ends may not
+                // have arrived.
+                if (frame + settle >= frames) return false;
+                // A hand above the head at full extension is a rising block (age-uke), not a punch; so is one at
+                // the head's height under an elbow raised well over the shoulder (the block on its way up).
                 if (extremity[frame][limb].y() > head_y[frame] + k_block_above_head * length) return false;
+                if (extremity[frame][limb].y() > head_y[frame] - 0.05 &&
+                    middle[frame][limb].y() - root[frame][limb].y() > 0.35 * chain.upper_length) return false;
                 // A punch is thrown: the arm extends from bent within the last moments. An arm held out in a guard
                 // (karate's kamae) or settling into it stays extended.
                 if (signal[frame] - signal[valley(signal, frame, -1, speed_window * 2)] < k_punch_rise) return false;
@@ -168,10 +230,19 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
                 }
                 return fastest >= 1.5;
             });
-            for (int frame : peaks) {
-                const double strength = std::min((signal[frame] - 0.85) / 0.15, (reach[frame][limb] - 0.6) / 0.6);
-                add(StrikeSemantics::punch, parts[2], side, frame, signal, 0.5 + 0.5 * strength);
+            for (int peak : peaks) {
+                // The fist meets a target as it arrives: the first frame within 2 cm of the peak extension (a punch
+                // held out, as a kata's, peaks late in the hold; one that plateaus, after it has stopped).
+                int hit = peak;
+                while (hit > 0 && signal[hit - 1] >= signal[peak] - 0.02 / length) --hit;
+                const bool known = std::any_of(strikes.begin(), strikes.end(), [&](const StrikeSuggestion& other) {
+                    return other.semantics == StrikeSemantics::punch && other.segment == parts[2] && other.hit_frame == hit;
+                });
+                if (known) continue; // a second peak of one held punch
+                const double strength = std::min((signal[peak] - 0.85) / 0.15, (reach[peak][limb] - 0.6) / 0.6);
+                add(StrikeSemantics::punch, parts[2], side, hit, signal, 0.5 + 0.5 * strength);
             }
+            detect_elbow_strikes(limb, side, parts[1]);
             continue;
         }
         // Legs: the ankle raised above its standing height. Straightened at the top (the foot thrust out to a

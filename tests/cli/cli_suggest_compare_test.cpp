@@ -1,0 +1,61 @@
+// kumite suggest FILE.bvh... --compare ANNOTATIONS.json: the detection scored against hand annotations per folder,
+// a block that is proposed counted against precision, a strike that is not against recall.
+
+#include "support/test_paths.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+using kumite::test::run_command;
+
+namespace {
+
+std::string kumite_exe() { return (kumite::test::bin_dir() / "kumite").string(); }
+
+} // namespace
+
+TEST_CASE("cli: suggest --compare scores the detection on whole captures per folder", "[cli][corpus]") {
+    const std::filesystem::path folder = kumite::test::mocap_root() / "hachaj-shorinryu";
+    if (!std::filesystem::exists(folder)) return;
+    const std::string reference = (kumite::test::source_dir() / "data/annotations/reference.json").string();
+    std::string files;
+    for (const char* name : {"s1_empi_left_sample0.bvh", "s2_hiza_geri_right_sample3.bvh", "s1_mae_geri_right_sample4.bvh",
+                             "s2_yoko_geri_left_sample1.bvh", "s1_age_uke_right_sample2.bvh", "s2_gedan_barai_left_sample5.bvh"}) {
+        files += " " + (folder / name).string();
+    }
+    const auto scored = run_command(kumite_exe() + " suggest" + files + " --compare " + reference + " --mocap-root " +
+                                    kumite::test::mocap_root().string() + " --json");
+    INFO(scored.err);
+    REQUIRE(scored.status == 0);
+    const nlohmann::json report = nlohmann::json::parse(scored.out);
+    const nlohmann::json& shorinryu = report["folders"]["hachaj-shorinryu"];
+    CHECK(shorinryu["files"] == 6);
+    CHECK(shorinryu["annotated"] == 4); // the blocks hold no strike
+    CHECK(shorinryu["matched"] == 4);
+    CHECK(shorinryu["proposed"] == 4);
+    CHECK(shorinryu["recall"].get<double>() == Approx(1.0));
+    CHECK(shorinryu["precision"].get<double>() == Approx(1.0));
+    CHECK(shorinryu["semantics_confusion"]["elbow"]["elbow"] == 1);
+    CHECK(shorinryu["semantics_confusion"]["knee"]["knee"] == 1);
+    CHECK(report["files"].size() == 6);
+
+    // Against an annotation file that lacks the elbow strike, the same proposal is an extra: precision drops.
+    nlohmann::json annotations = nlohmann::json::parse(kumite::test::read_text(reference));
+    nlohmann::json kept = nlohmann::json::array();
+    for (const auto& clip : annotations["clips"]) {
+        if (clip["source"] != "hachaj-shorinryu/s1_empi_left_sample0.bvh") kept.push_back(clip);
+    }
+    annotations["clips"] = kept;
+    const std::filesystem::path edited = kumite::test::make_temp_dir("suggest-compare") / "without_elbow.json";
+    std::ofstream(edited) << annotations.dump();
+    const auto without = run_command(kumite_exe() + " suggest" + files + " --compare " + edited.string() + " --mocap-root " +
+                                     kumite::test::mocap_root().string() + " --json");
+    REQUIRE(without.status == 0);
+    const nlohmann::json without_report = nlohmann::json::parse(without.out);
+    const nlohmann::json& less = without_report["folders"]["hachaj-shorinryu"];
+    CHECK(less["annotated"] == 3);
+    CHECK(less["precision"].get<double>() == Approx(0.75));
+    CHECK(less["semantics_confusion"]["none"]["elbow"] == 1);
+}
