@@ -41,17 +41,18 @@ FIXES = {
     # across over the last 0.1 s (26 cm sideways, 16 cm along): a low roundhouse, not the side kick the rule says.
     ("cmu14-boxing/kick.bvh", "foot_r", 218): {"kind": "roundhouse"},
 }
-# Candidates the eye rejected: (source, segment, rule frame) -> reason.
+# Candidates the eye rejected: (source, segment, rule frame or hit frame) -> reason.
 _BLOCK = "the hand comes down onto its line from above, the arm angled down: a knife-hand or down-block"
 EXCLUDED = {
-    ("hachaj-kata/0.2-fukyugata_ni.bvh", "hand_l", 2708): "arm folded, the fist loops back to the chest",
     ("hachaj-kata/0.2-fukyugata_ni.bvh", "hand_r", 1807): _BLOCK,
     ("hachaj-kata/fukyugata_ichi.bvh", "hand_l", 114): _BLOCK,
     ("hachaj-kata/fukyugata_ni.bvh", "hand_l", 1943): "the hand circles above the head first: a block",
     ("hachaj-kata/pinian_nidan.bvh", "hand_l", 2498): _BLOCK,
     ("hachaj-kata/pinian_nidan.bvh", "hand_r", 2665): _BLOCK,
     ("cmu14-boxing/box-1.bvh", "hand_l", 810): "the bent arm sweeps outwards, away from the midline: a parry",
-    ("cmu14-boxing/box-1.bvh", "hand_r", 837): "the bent arm sweeps outwards, away from the midline: a parry",
+    ("hachaj-kata/fukyugata_ichi.bvh", "hand_l", 619): _BLOCK,
+    ("hachaj-kata/pinian_shodan.bvh", "hand_r", 3381): _BLOCK,
+    ("hachaj-kata/0.2-fukyugata_ni.bvh", "hand_r", 2461): "the fist loops round over the head first: a block, then a reach",
     ("cmu14-boxing/box-3.bvh", "hand_l", 2311): "the arm folded, the fist low by the body: the guard dropping",
     ("cmu14-boxing/box-1.bvh", "hand_l", 1452): "the fist scoops upwards (17 cm in 4 frames) as it arrives: neither a "
                                                 "straight punch nor a clear uppercut",
@@ -176,9 +177,15 @@ def shorinryu(cap):
         hit = int(np.argmax(cap.j("shin_" + s)[:, 1]))
         return [clip(cap, semantics, "shin_" + s, side, hit, kind)]
     # Empi here is the rising elbow strike: the elbow drives up and forward to chin height and stops there; the
-    # hit is where it stops rising (the first frame within 1.5 cm of its highest point).
-    elbow_y = cap.j("forearm_" + s)[:, 1]
-    hit = int(np.nonzero(elbow_y >= elbow_y.max() - 0.015)[0][0])
+    # hit is where it stops rising over the shoulder (after the fastest frame of the rise, the first whose rise is
+    # under a fifth of that; over the shoulder, since the suit pinned the hips and heights over the floor drift).
+    elbow_y = cap.j("forearm_" + s)[:, 1] - cap.j("upper_arm_" + s)[:, 1]
+    rise = np.diff(elbow_y, prepend=elbow_y[0])
+    top = int(np.argmax(elbow_y))
+    fastest = int(np.argmax(rise[:top + 1]))
+    hit = fastest
+    while hit < top and rise[hit + 1] >= 0.2 * rise[fastest]:
+        hit += 1
     return [clip(cap, semantics, "forearm_" + s, side, hit, kind)]
 
 
@@ -209,7 +216,7 @@ def kick_kind(cap, side, hit):
     return "front" if cos > np.cos(np.radians(50)) else "side"
 
 
-def travels_straight(cap, side, hit):
+def travels_straight(cap, side, hit, top):
     """A kata punch: the fist ends near shoulder height and got there along its line (not from above or from the
     side, as a knife-hand or a down-block does), and not with the forearm raised up at the head's height (a
     rising block, age-uke, ends there)."""
@@ -219,8 +226,8 @@ def travels_straight(cap, side, hit):
     line[1] = 0.0
     line /= np.linalg.norm(line)
     travel = hand[hit] - hand[max(0, hit - int(0.25 * cap.fps))]
-    forearm = hand[hit] - cap.j("forearm_" + s)[hit]
-    rising_block = forearm[1] > 0.3 * np.linalg.norm(forearm) and hand[hit, 1] > cap.j("head")[hit, 1] - 0.06
+    forearm = hand[top] - cap.j("forearm_" + s)[top]  # where the arm ends up (the peak of its reach)
+    rising_block = forearm[1] > 0.3 * np.linalg.norm(forearm) and hand[top, 1] > cap.j("head")[top, 1] - 0.06
     return (hand[hit, 1] > shoulder[hit, 1] - 0.3 and not rising_block and
             np.dot(travel, line) > 0.7 * np.linalg.norm(travel))
 
@@ -236,24 +243,26 @@ def punches(cap, min_extension, min_gain):
         below_head = hand[:, 1] < cap.j("head")[:, 1]
         above_hip = hand[:, 1] - cap.floor > 0.8 * cap.hip_m
         mask = (extension > min_extension) & (fast > 1.5) & below_head & above_hip & (reach > 0.6 * cap.arm)
-        for hit in local_peaks(reach, mask, int(0.35 * cap.fps)):
-            start = max(0, hit - int(0.35 * cap.fps))
-            gain = np.linalg.norm(hand[hit] - cap.j("upper_arm_" + s)[hit]) - \
-                np.linalg.norm(hand[start:hit + 1] - cap.j("upper_arm_" + s)[start:hit + 1], axis=1).min()
-            if gain < min_gain * cap.arm:
-                continue  # the arm did not shoot out: a block, a guard held out, a wave
+        for candidate in local_peaks(reach, mask, int(0.35 * cap.fps)):
             # The fist meets a target as it arrives, not after it has stopped: the first frame within 2 cm of the
-            # peak reach (a punch that plateaus at full extension would otherwise be hit while already coming back).
-            peak, candidate = reach[hit], hit
-            while hit > start and reach[hit - 1] >= peak - 0.02:
+            # peak reach (a punch that plateaus at full extension, or a kata punch held out, would otherwise be hit
+            # while already coming back, or late in the hold).
+            hit = candidate
+            while hit > 0 and reach[hit - 1] >= reach[candidate] - 0.02:
                 hit -= 1
+            start = max(0, hit - int(0.35 * cap.fps))
+            gain = extension[hit] - extension[start:hit + 1].min()
+            if gain < min_gain:
+                continue  # the arm did not shoot out: a block, a guard held out, a wave
+            if any(c["segment"] == "hand_" + s and abs(c["hit_frame"] - hit) < 0.3 * cap.fps for c in out):
+                continue  # a second peak of one held punch
             out.append(clip(cap, "punch", "hand_" + s, side, hit, "straight", tail_s=0.5))
             out[-1]["_candidate"] = candidate  # FIXES and EXCLUDED name the peak frame
     return out
 
 
 def kata(cap):
-    straight = [c for c in punches(cap, 0.85, 0.4) if travels_straight(cap, c["side"], c["_candidate"])]
+    straight = [c for c in punches(cap, 0.85, 0.4) if travels_straight(cap, c["side"], c["hit_frame"], c["_candidate"])]
     return kicks(cap, kick_kind) + straight
 
 
@@ -309,7 +318,9 @@ MATCHED = set()
 def apply_fixes(clips):
     kept = []
     for c in clips:
-        key = (c["source"], c["segment"], c.pop("_candidate", c["hit_frame"]))
+        candidate_key = (c["source"], c["segment"], c.pop("_candidate", c["hit_frame"]))
+        hit_key = (c["source"], c["segment"], c["hit_frame"])
+        key = hit_key if hit_key in EXCLUDED or hit_key in FIXES else candidate_key
         if key in EXCLUDED or key in FIXES:
             MATCHED.add(key)
         if key in EXCLUDED:
@@ -420,8 +431,7 @@ def main():
         doc["clips"] += new_clips[folder]
     doc.setdefault("captures", {})
     for source in sorted(s for s in captures if s.startswith("hachaj-shorinryu/")):
-        if any(c["source"] == source for c in new_clips["hachaj-shorinryu"]):
-            doc["captures"][source] = {"fps": 100}
+        doc["captures"][source] = {"fps": 100}  # blocks too: their files say 'Frame Time: 0' as well
     tmp = args.out + ".tmp"
     with open(tmp, "w") as f:
         json.dump(doc, f, indent=2)

@@ -84,7 +84,7 @@ def main():
         bout = os.path.join(work, "bout.json")
         recording = os.path.join(work, "bout.glb")
         subprocess.run([args.kumite, "play", database, "--headless", "--character", character, "--tracker", "simulate:still",
-                        "--commands", "script:" + args.bout, "--duration", "80", "--report", bout, "--record", recording],
+                        "--commands", "script:" + args.bout, "--duration", "85", "--report", bout, "--record", recording],
                        check=True, stdout=subprocess.DEVNULL)
         report = json.load(open(bout))
         check(report["strikes"] > 0 and report["hits"] >= 0.9 * report["strikes"],
