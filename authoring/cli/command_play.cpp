@@ -54,7 +54,7 @@ const CommandSpec& play_spec() {
          {"realtime", "", "step on the wall clock"},
          {"seed", "N", "seed of the simulated user (default 1)"},
          {"lead", "S", "the least time from an order's strike start to its contact (default 0.4 s)"},
-         {"variety", "N", "prefer a clip not used in the last N strikes when one scores within 0.15 of the best (default 3, 0: always the best)"},
+         {"variety", "N", "prefer a clip not used in the last N strikes when one scores within 0.15 of the best (default 6, 0: always the best)"},
          {"no-defence", "", "the fighter does not block or slip the user's strikes (also the command 'defence on|off', the viewer's D key)"},
          {"aim", "latched|predicted", "strike the head where it was at the order (default), or where it will be at the contact\n"
                                       "if it keeps its course (also the command 'aim latched|predicted' and the viewer's A key)"},
@@ -225,7 +225,7 @@ int run_play(int argc, char** argv) {
     const Result<long long> seed = arguments.integer("seed", 0, 1LL << 62, 1);
     if (!fighters_count) return usage_error(play_spec(), fighters_count.error().message);
     if (!seed) return usage_error(play_spec(), seed.error().message);
-    const Result<long long> variety = arguments.integer("variety", 0, k_max_variety_recent, 3);
+    const Result<long long> variety = arguments.integer("variety", 0, k_max_variety_recent, 6);
     if (!variety) return usage_error(play_spec(), variety.error().message);
     double lead_s = 0.4;
     if (const std::optional<std::string> text = arguments.value("lead")) {

@@ -74,7 +74,7 @@ struct FighterSettings {
     // Variety: when the best strike for an order is one of the last `variety_recent` clips struck, the best other
     // clip is taken instead if its score is within `variety_margin` of the best (score units: leg lengths of pose
     // and target distance). 0 recent: always the best.
-    int variety_recent = 3;
+    int variety_recent = 6; // with ~40 clips per order, 6 keeps twenty same orders on at least six clips
     double variety_margin = 0.15;
 };
 inline constexpr int k_max_variety_recent = 8;
