@@ -41,6 +41,26 @@ FIXES = {
     # across over the last 0.1 s (26 cm sideways, 16 cm along): a low roundhouse, not the side kick the rule says.
     ("cmu14-boxing/kick.bvh", "foot_r", 218): {"kind": "roundhouse"},
 }
+# Strikes the rules missed and the eye accepted: kata punches thrown straight after a block of the same arm (the
+# arm was already extended, so the rule's "shot out from bent" test failed), proposed by kumite suggest and each
+# looked at on a contact sheet (the arm straight at shoulder height, the fist travelling along its line).
+# (source, segment, hit frame) -> kind.
+ADDED = {
+    ("hachaj-kata/0.1-fukyugata_ichi.bvh", "hand_r", 879): "straight",
+    ("hachaj-kata/0.1-fukyugata_ichi.bvh", "hand_r", 1820): "straight",
+    ("hachaj-kata/2-pinian_nidan.bvh", "hand_r", 276): "straight",
+    ("hachaj-kata/2-pinian_nidan.bvh", "hand_r", 1361): "straight",
+    ("hachaj-kata/fukyugata_ichi.bvh", "hand_r", 749): "straight",
+    ("hachaj-kata/fukyugata_ichi.bvh", "hand_r", 989): "straight",
+    ("hachaj-kata/fukyugata_ichi.bvh", "hand_r", 1625): "straight",
+    ("hachaj-kata/fukyugata_ichi.bvh", "hand_r", 1876): "straight",
+    ("hachaj-kata/fukyugata_ni.bvh", "hand_l", 1082): "straight",
+    ("hachaj-kata/pinian_nidan.bvh", "hand_r", 278): "straight",
+    ("hachaj-kata/pinian_nidan.bvh", "hand_r", 2093): "straight",
+    ("hachaj-kata/pinian_nidan.bvh", "hand_r", 2295): "straight",
+    ("hachaj-kata/pinian_shodan.bvh", "hand_r", 544): "straight",
+    ("hachaj-kata/pinian_shodan.bvh", "hand_r", 2656): "straight",
+}
 # Candidates the eye rejected: (source, segment, rule frame or hit frame) -> reason.
 _BLOCK = "the hand comes down onto its line from above, the arm angled down: a knife-hand or down-block"
 EXCLUDED = {
@@ -417,6 +437,11 @@ def main():
             cap = Capture(args.kumite, args.mocap_root, source, fps)
             captures[source] = cap
             clips += annotate(cap)
+        for (source, segment, hit), kind in ADDED.items():
+            if source.startswith(folder + "/"):
+                side = "left" if segment.endswith("_l") else "right"
+                clips.append(clip(captures[source], "punch", segment, side, hit, kind, tail_s=0.5))
+        clips.sort(key=lambda c: (c["source"], c["hit_frame"]))
         new_clips[folder] = apply_fixes(clips)
         print(f"{folder}: {len(new_clips[folder])} strikes ({len(clips) - len(new_clips[folder])} candidates "
               f"excluded by eye)", file=sys.stderr)

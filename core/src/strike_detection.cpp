@@ -212,7 +212,9 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
             for (int frame = 0; frame < frames; ++frame) signal[frame] = extension[frame][limb];
             const int settle = std::max(1, static_cast<int>(std::lround(0.1 / dt)));
             const auto peaks = local_maxima(signal, half_window, min_gap, [&](int frame) {
-                if (signal[frame] < 0.85 || reach[frame][limb] < 0.6) return false;
+                // A punch lands before the arm locks: 0.78 of the arm's length from the shoulder is a boxer's
+                // straight from a bladed guard (CMU 14); a karateka's reaches full extension.
+                if (signal[frame] < 0.78 || reach[frame][limb] < 0.6) return false;
                 // The capture must go on a little after a hit: a hand still extending as the file ends may not
                 // have arrived.
                 if (frame + settle >= frames) return false;
@@ -236,10 +238,10 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
                 int hit = peak;
                 while (hit > 0 && signal[hit - 1] >= signal[peak] - 0.02 / length) --hit;
                 const bool known = std::any_of(strikes.begin(), strikes.end(), [&](const StrikeSuggestion& other) {
-                    return other.semantics == StrikeSemantics::punch && other.segment == parts[2] && other.hit_frame == hit;
+                    return other.semantics == StrikeSemantics::punch && other.segment == parts[2] && std::abs(other.hit_frame - hit) < min_gap;
                 });
                 if (known) continue; // a second peak of one held punch
-                const double strength = std::min((signal[peak] - 0.85) / 0.15, (reach[peak][limb] - 0.6) / 0.6);
+                const double strength = std::min((signal[peak] - 0.78) / 0.22, (reach[peak][limb] - 0.6) / 0.6);
                 add(StrikeSemantics::punch, parts[2], side, hit, signal, 0.5 + 0.5 * strength);
             }
             detect_elbow_strikes(limb, side, parts[1]);
