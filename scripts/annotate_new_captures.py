@@ -44,7 +44,7 @@ FIXES = {
 # Strikes the rules missed and the eye accepted: kata punches thrown straight after a block of the same arm (the
 # arm was already extended, so the rule's "shot out from bent" test failed), proposed by kumite suggest and each
 # looked at on a contact sheet (the arm straight at shoulder height, the fist travelling along its line).
-# (source, segment, hit frame) -> kind.
+# (source, segment, hit frame) -> punch kind, or "elbow".
 ADDED = {
     ("hachaj-kata/0.1-fukyugata_ichi.bvh", "hand_r", 879): "straight",
     ("hachaj-kata/0.1-fukyugata_ichi.bvh", "hand_r", 1820): "straight",
@@ -60,6 +60,11 @@ ADDED = {
     ("hachaj-kata/pinian_nidan.bvh", "hand_r", 2295): "straight",
     ("hachaj-kata/pinian_shodan.bvh", "hand_r", 544): "straight",
     ("hachaj-kata/pinian_shodan.bvh", "hand_r", 2656): "straight",
+    # Fukyugata Ni (Gekisai Dai Ichi) follows each front kick with an elbow strike: the elbow driven up in front to
+    # head height, the fist folded by the ear, 0.6-1.0 s after the kick of the same side.
+    ("hachaj-kata/fukyugata_ni.bvh", "forearm_l", 1906): "elbow",
+    ("hachaj-kata/fukyugata_ni.bvh", "forearm_r", 2589): "elbow",
+    ("hachaj-kata/0.2-fukyugata_ni.bvh", "forearm_l", 1520): "elbow",
 }
 # Candidates the eye rejected: (source, segment, rule frame or hit frame) -> reason.
 _BLOCK = "the hand comes down onto its line from above, the arm angled down: a knife-hand or down-block"
@@ -440,7 +445,8 @@ def main():
         for (source, segment, hit), kind in ADDED.items():
             if source.startswith(folder + "/"):
                 side = "left" if segment.endswith("_l") else "right"
-                clips.append(clip(captures[source], "punch", segment, side, hit, kind, tail_s=0.5))
+                semantics, kind = ("elbow", "other") if kind == "elbow" else ("punch", kind)
+                clips.append(clip(captures[source], semantics, segment, side, hit, kind, tail_s=0.5))
         clips.sort(key=lambda c: (c["source"], c["hit_frame"]))
         new_clips[folder] = apply_fixes(clips)
         print(f"{folder}: {len(new_clips[folder])} strikes ({len(clips) - len(new_clips[folder])} candidates "
