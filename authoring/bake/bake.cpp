@@ -3,7 +3,6 @@
 #include "bake_clip.h"
 #include "parallel_for.h"
 
-#include "kumite/core/body_map.h"
 #include "kumite/core/pose_clusters.h"
 
 #include <chrono>
@@ -58,14 +57,7 @@ void assemble_clusters(MotionDatabaseContent& db, const PoseClusters& clusters) 
 // from its first frame to its hit, bakes but can never be chosen.
 void warn_unservable_strikes(const MotionDatabaseView& db, std::string_view annotations_name, std::vector<std::string>& warnings) {
     for (const DbClip& clip : db.clips) {
-        if (!db_clip_is_strike(clip) || clip.hit_frame < 0) continue;
-        const bool arm = clip.segment >= static_cast<int>(BodyPart::clavicle_l) && clip.segment <= static_cast<int>(BodyPart::hand_r);
-        if (arm) continue;
-        const std::string_view part = body_part_name(static_cast<BodyPart>(clip.segment));
-        const std::uint32_t support = part.ends_with("_l") ? db_pose_right_foot_planted : db_pose_left_foot_planted;
-        bool planted = false;
-        for (int frame = 0; frame <= clip.hit_frame && !planted; ++frame) planted = db.poses[clip.first_pose + frame].flags & support;
-        if (!planted) {
+        if (db_clip_support_foot(clip) && db_clip_support_down_until(db, clip) < 0) {
             warnings.push_back(std::string(annotations_name) + ": clip " + std::string(db.string(clip.name)) +
                                ": the support foot is never planted before the hit; retrieval will never start this strike");
         }

@@ -43,6 +43,15 @@ Result<void> require_frame_rate(const BvhFile& file, const std::filesystem::path
                                               std::string(what_needs_it) + " needs it: give it with --fps N (e.g. --fps 100)");
 }
 
+Result<TimedCapture> load_timed_capture(const std::filesystem::path& path, const CaptureOptions& options, std::string_view what_needs_it) {
+    Result<BvhFile> file = load_capture(path, options);
+    if (!file) return file.error();
+    if (Result<void> timed = require_frame_rate(*file, path, what_needs_it); !timed) return timed.error();
+    Result<RestAnatomy> anatomy = rest_anatomy_build(file->clip, file->body_map);
+    if (!anatomy) return make_error(anatomy.error().code, path.string() + ": " + anatomy.error().message);
+    return TimedCapture{std::move(*file), std::move(*anatomy)};
+}
+
 std::filesystem::path resolve_capture_path(const std::filesystem::path& path, const std::filesystem::path& mocap_root) {
     std::error_code error;
     if (std::filesystem::exists(path, error) || path.is_absolute()) return path;

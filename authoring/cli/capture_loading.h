@@ -3,6 +3,7 @@
 // capture, reading it with its body map override, and printing JSON.
 
 #include "arguments.h"
+#include "kumite/core/rest_anatomy.h"
 #include "kumite/formats/bvh_reader.h"
 #include "kumite/formats/character_catalog.h"
 
@@ -35,6 +36,14 @@ std::filesystem::path resolve_capture_path(const std::filesystem::path& path, co
 // Reads the capture and applies --body-map, or the sidecar FILE.bodymap.json when there is one.
 // The file's warnings (what it tolerated) go to stderr, one "warning: file:line: ..." line each.
 Result<BvhFile> load_capture(const std::filesystem::path& path, const CaptureOptions& options);
+
+// A capture that work over time can use: loaded (load_capture), with a frame rate (require_frame_rate, for
+// `what_needs_it`) and its rest anatomy. Errors name the file.
+struct TimedCapture {
+    BvhFile file;
+    RestAnatomy anatomy;
+};
+Result<TimedCapture> load_timed_capture(const std::filesystem::path& path, const CaptureOptions& options, std::string_view what_needs_it);
 
 // $KUMITE_MOCAP_ROOT, else data/mocap (see locate_data_folder).
 std::filesystem::path default_mocap_root();

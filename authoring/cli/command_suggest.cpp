@@ -82,12 +82,10 @@ int run_suggest(int argc, char** argv) {
     nlohmann::json files = nlohmann::json::array();
     RawAnnotations annotations;
     for (const std::string& path : arguments.positionals) {
-        Result<BvhFile> file = load_capture(path, *options);
-        if (!file) return input_error(file.error().message);
-        if (Result<void> timed = require_frame_rate(*file, path, "suggest (strike speeds)"); !timed) return input_error(timed.error().message);
-        Result<RestAnatomy> anatomy = rest_anatomy_build(file->clip, file->body_map);
-        if (!anatomy) return input_error(path + ": " + anatomy.error().message);
-        const std::vector<StrikeSuggestion> strikes = strikes_detect(file->clip, *anatomy, segment);
+        Result<TimedCapture> capture = load_timed_capture(path, *options, "suggest (strike speeds)");
+        if (!capture) return input_error(capture.error().message);
+        const BvhFile* file = &capture->file;
+        const std::vector<StrikeSuggestion> strikes = strikes_detect(file->clip, capture->anatomy, segment);
         files.push_back({{"file", path}, {"strikes", strikes_json(strikes)}});
         const std::string source = source_relative_to_root(resolve_capture_path(path, options->mocap_root), options->mocap_root);
         if (!file->frame_rate_in_file) annotations.capture_fps[source] = 1.0 / file->clip.frame_time_s; // the bake needs it too

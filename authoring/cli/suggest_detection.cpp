@@ -71,12 +71,10 @@ int run_detection_compare(const std::vector<std::string>& paths, const std::stri
         if (const auto rate = annotations->capture_fps.find(source); rate != annotations->capture_fps.end() && !options.read.frame_rate_hz) {
             file_options.read.frame_rate_hz = rate->second;
         }
-        Result<BvhFile> file = load_capture(path, file_options);
-        if (!file) return input_error(file.error().message);
-        if (Result<void> timed = require_frame_rate(*file, path, "suggest (strike speeds)"); !timed) return input_error(timed.error().message);
-        Result<RestAnatomy> anatomy = rest_anatomy_build(file->clip, file->body_map);
-        if (!anatomy) return input_error(path + ": " + anatomy.error().message);
-        const std::vector<StrikeSuggestion> proposed = strikes_detect(file->clip, *anatomy);
+        Result<TimedCapture> capture = load_timed_capture(path, file_options, "suggest (strike speeds)");
+        if (!capture) return input_error(capture.error().message);
+        const BvhFile* file = &capture->file;
+        const std::vector<StrikeSuggestion> proposed = strikes_detect(file->clip, capture->anatomy);
 
         std::vector<const RawAnnotatedClip*> annotated;
         for (const RawAnnotatedClip& clip : annotations->clips) {

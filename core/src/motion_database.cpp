@@ -91,4 +91,24 @@ void db_mir_frame_load(MirFrame& out, const DbMirFrame& stored) {
 
 bool db_clip_is_strike(const DbClip& clip) { return (clip.flags & db_clip_strike) != 0; }
 
+bool db_clip_is_arm_strike(const DbClip& clip) {
+    return db_clip_is_strike(clip) && clip.segment >= static_cast<int>(BodyPart::clavicle_l) &&
+           clip.segment <= static_cast<int>(BodyPart::hand_r);
+}
+
+std::uint32_t db_clip_support_foot(const DbClip& clip) {
+    if (!db_clip_is_strike(clip) || db_clip_is_arm_strike(clip)) return 0;
+    const bool left_leg = body_part_name(static_cast<BodyPart>(clip.segment)).ends_with("_l");
+    return left_leg ? db_pose_right_foot_planted : db_pose_left_foot_planted;
+}
+
+int db_clip_support_down_until(const MotionDatabaseView& db, const DbClip& clip) {
+    const std::uint32_t support = db_clip_support_foot(clip);
+    if (!support) return -1;
+    for (int frame = clip.hit_frame; frame >= 0; --frame) {
+        if (db.poses[clip.first_pose + frame].flags & support) return frame;
+    }
+    return -1;
+}
+
 } // namespace kumite

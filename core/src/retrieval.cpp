@@ -21,10 +21,6 @@ double rms_distance(std::span<const float> a, std::span<const float> b) {
     return std::sqrt(pose_feature_distance(a, b) / k_feature_cloud_size);
 }
 
-bool is_arm_part(int segment) {
-    return segment >= static_cast<int>(BodyPart::clavicle_l) && segment <= static_cast<int>(BodyPart::hand_r);
-}
-
 // A point of the clip world seen from a start's heading frame (yaw as cos/sin).
 Eigen::Vector3d to_start_heading(const DbPose& start, float cos_yaw, float sin_yaw, const float (&point)[3]) {
     const double dx = point[0] - start.heading[0], dz = point[2] - start.heading[1];
@@ -48,7 +44,7 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
         info.side = static_cast<Side>(std::min<std::uint32_t>(clip.side, 2));
         info.kind = static_cast<StrikeKind>(clip.kind % k_strike_kind_count);
         info.height = static_cast<StrikeHeight>(clip.height % k_strike_height_count);
-        info.arm_strike = is_arm_part(clip.segment);
+        info.arm_strike = db_clip_is_arm_strike(clip);
         info.first_start = info.end_start = static_cast<int>(clip.first_pose);
         // Starts lead the hit by min_lead_frames; a strike whose whole wind-up is shorter (a snap elbow from
         // guard) starts at its first frame, never mid-flight.
@@ -57,13 +53,8 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
         info.actor_leg_length = actor.leg_length_m;
         const bool by_arm = m_settings.scaling == RetrievalScaling::limb_length && info.arm_strike;
         info.actor_scale_length = by_arm ? actor.arm_length_m : actor.leg_length_m;
-        if (db_clip_is_strike(clip) && !info.arm_strike) {
-            const bool left_leg = body_part_name(static_cast<BodyPart>(clip.segment)).ends_with("_l");
-            info.support_foot = left_leg ? db_pose_right_foot_planted : db_pose_left_foot_planted;
-            for (int frame = clip.hit_frame; frame >= 0 && info.support_down_until < 0; --frame) {
-                if (m_db.poses[clip.first_pose + frame].flags & info.support_foot) info.support_down_until = int(clip.first_pose) + frame;
-            }
-        }
+        info.support_foot = db_clip_support_foot(clip);
+        if (const int down = db_clip_support_down_until(m_db, clip); down >= 0) info.support_down_until = int(clip.first_pose) + down;
     }
 
     m_poses.resize(m_db.poses.size());

@@ -14,15 +14,33 @@ constexpr double k_min_gap_s = 0.3;
 constexpr double k_span_s = 1.0;
 constexpr double k_kick_extension = 0.85;  // leg straightness (hip-ankle over leg length) that makes a raised foot a kick
 constexpr double k_knee_rise = 0.3;        // knee above its standing height, in leg lengths, for a knee strike
-constexpr double k_block_above_head = 0.3;
+constexpr double k_block_above_head = 0.3; // a hand this far (arm lengths) above the head is blocking, not punching
 constexpr double k_elbow_rise = 0.8;       // how far an elbow strike lifts the elbow (upper-arm lengths) within 0.6 s
 constexpr double k_elbow_folded_deg = 84.0; // an elbow opened wider than this, its wrist up by the head, is a rising block
-constexpr double k_punch_rise = 0.3;       // how much a punch's extension grows in the 0.6 s before its hit // a hand this far (arm lengths) above the head is blocking, not punching
+constexpr double k_punch_rise = 0.3;       // how much a punch's extension grows in the 0.6 s before its hit
 
-struct Peak {
-    int frame = 0;
-    double strength = 0.0; // how far the peak clears its thresholds, 0..1
-};
+using LimbTrack = std::vector<std::array<Eigen::Vector3d, k_limb_count>>; // [frame][limb] one joint of each limb
+
+// The fastest `track`'s joint of `limb` moves over the `window` frames up to `frame`, in `length`s per second.
+double fastest_over(const LimbTrack& track, int limb, int frame, int window, double dt, double length) {
+    double fastest = 0.0;
+    for (int f = std::max(1, frame - window); f <= frame; ++f) fastest = std::max(fastest, (track[f][limb] - track[f - 1][limb]).norm() / dt / length);
+    return fastest;
+}
+
+// The angle at the middle joint, degrees: 180 straight, 0 folded.
+double bend_deg(const Eigen::Vector3d& root, const Eigen::Vector3d& middle, const Eigen::Vector3d& extremity) {
+    const Eigen::Vector3d upper = root - middle, lower = extremity - middle;
+    return std::acos(std::clamp(upper.normalized().dot(lower.normalized()), -1.0, 1.0)) * 180.0 / 3.14159265358979;
+}
+
+// Whether `strikes` already holds one of `semantics` by `part` within `within` frames of `hit`: a second peak of
+// the same strike.
+bool already_found(const std::vector<StrikeSuggestion>& strikes, StrikeSemantics semantics, BodyPart part, int hit, int within) {
+    return std::any_of(strikes.begin(), strikes.end(), [&](const StrikeSuggestion& other) {
+        return other.semantics == semantics && other.segment == part && std::abs(other.hit_frame - hit) < within;
+    });
+}
 
 // Frames where `signal` has a local maximum over +-half_window frames and `accept(frame)` holds; peaks closer than
 // `min_gap` frames keep the larger.
@@ -84,7 +102,7 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
     std::vector<Eigen::Quaterniond> rotations(skeleton.joint_count());
     // Per frame: each limb's extension and reach, its extremity's and middle joint's positions; the head's height.
     std::vector<std::array<double, k_limb_count>> extension(frames), reach(frames), ahead(frames);
-    std::vector<std::array<Eigen::Vector3d, k_limb_count>> extremity(frames), middle(frames), root(frames);
+    LimbTrack extremity(frames), middle(frames), root(frames);
     std::vector<double> head_y(frames, 0.0), part_distance(frames, 0.0);
     const int pelvis = map.joint(BodyPart::pelvis);
     const int chest = map.joint(BodyPart::chest);
@@ -172,11 +190,7 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
             if (lift[frame] < 0.0) return false; // not above the shoulder
             const int low = valley(lift, frame, -1, rise_window);
             if (lift[frame] - lift[low] < k_elbow_rise) return false;
-            double fastest = 0.0;
-            for (int f = std::max(1, frame - speed_window); f <= frame; ++f) {
-                fastest = std::max(fastest, (middle[f][limb] - middle[f - 1][limb]).norm() / dt / chain.upper_length);
-            }
-            return fastest >= 2.0;
+            return fastest_over(middle, limb, frame, speed_window, dt, chain.upper_length) >= 2.0;
         });
         for (int peak : peaks) {
             // Where the rise stops: after its fastest frame, the first whose rise is under a fifth of that.
@@ -188,16 +202,12 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
             int hit = fastest;
             while (hit < peak && lift[hit + 1] - lift[hit] >= 0.2 * (lift[fastest] - lift[fastest - 1])) ++hit;
             // How the arm ends up at the top of the rise: a block opens there.
-            const Eigen::Vector3d upper = root[peak][limb] - middle[peak][limb], lower = extremity[peak][limb] - middle[peak][limb];
-            const double folded_deg = std::acos(std::clamp(upper.normalized().dot(lower.normalized()), -1.0, 1.0)) * 180.0 / 3.14159265358979;
+            const double folded_deg = bend_deg(root[peak][limb], middle[peak][limb], extremity[peak][limb]);
             const bool wrist_up = extremity[peak][limb].y() > head_y[peak] - 0.04;
             const bool wrist_above = extremity[peak][limb].y() > head_y[peak] + 0.1;
             if ((folded_deg >= k_elbow_folded_deg && wrist_up) || wrist_above) continue; // a rising block
             if (folded_deg >= 110.0) continue;                          // an arm raised open: a wave, a reach
-            const bool known = std::any_of(strikes.begin(), strikes.end(), [&](const StrikeSuggestion& other) {
-                return other.semantics == StrikeSemantics::elbow && other.segment == part && std::abs(other.hit_frame - hit) < 2 * min_gap;
-            });
-            if (known) continue; // a second top of one rise
+            if (already_found(strikes, StrikeSemantics::elbow, part, hit, 2 * min_gap)) continue; // a second top of one rise
             add(StrikeSemantics::elbow, part, side, hit, lift, 0.5 + 0.5 * std::min(1.0, (lift[peak] - lift[valley(lift, peak, -1, rise_window)] - k_elbow_rise) / 0.5));
         }
     };
@@ -226,21 +236,14 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
                 // A punch is thrown: the arm extends from bent within the last moments. An arm held out in a guard
                 // (karate's kamae) or settling into it stays extended.
                 if (signal[frame] - signal[valley(signal, frame, -1, speed_window * 2)] < k_punch_rise) return false;
-                double fastest = 0.0;
-                for (int f = std::max(1, frame - speed_window); f <= frame; ++f) {
-                    fastest = std::max(fastest, (extremity[f][limb] - extremity[f - 1][limb]).norm() / dt / length);
-                }
-                return fastest >= 1.5;
+                return fastest_over(extremity, limb, frame, speed_window, dt, length) >= 1.5;
             });
             for (int peak : peaks) {
                 // The fist meets a target as it arrives: the first frame within 2 cm of the peak extension (a punch
                 // held out, as a kata's, peaks late in the hold; one that plateaus, after it has stopped).
                 int hit = peak;
                 while (hit > 0 && signal[hit - 1] >= signal[peak] - 0.02 / length) --hit;
-                const bool known = std::any_of(strikes.begin(), strikes.end(), [&](const StrikeSuggestion& other) {
-                    return other.semantics == StrikeSemantics::punch && other.segment == parts[2] && std::abs(other.hit_frame - hit) < min_gap;
-                });
-                if (known) continue; // a second peak of one held punch
+                if (already_found(strikes, StrikeSemantics::punch, parts[2], hit, min_gap)) continue; // a second peak of one held punch
                 const double strength = std::min((signal[peak] - 0.78) / 0.22, (reach[peak][limb] - 0.6) / 0.6);
                 add(StrikeSemantics::punch, parts[2], side, hit, signal, 0.5 + 0.5 * strength);
             }
@@ -271,10 +274,7 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
                 }
                 if (reach[hit][limb] < 0.3) continue; // straight up and down: not at anything
                 if (ahead[hit][limb] < -0.3) continue; // swung back (a step, a follow-through), not thrust out
-                const bool known = std::any_of(strikes.begin(), strikes.end(), [&](const StrikeSuggestion& other) {
-                    return other.semantics == StrikeSemantics::kick && other.segment == parts[2] && other.hit_frame == hit;
-                });
-                if (known) continue; // two peaks of one raised interval
+                if (already_found(strikes, StrikeSemantics::kick, parts[2], hit, 1)) continue; // two peaks of one raised interval
                 const double strength = std::min((raised[hit] - 0.35) / 0.35, (reach[hit][limb] - 0.3) / 0.3);
                 add(StrikeSemantics::kick, parts[2], side, hit, raised, 0.5 + 0.5 * strength);
                 continue;

@@ -171,5 +171,12 @@ void db_mir_frame_load(MirFrame& out, const DbMirFrame& stored);
 
 // Strike counts by semantics and side, for summaries.
 bool db_clip_is_strike(const DbClip& clip);
+// Whether a strike clip strikes with an arm (clavicle to hand) rather than a leg.
+bool db_clip_is_arm_strike(const DbClip& clip);
+// A leg strike's support foot: the DbPoseFlags bit of the other leg's foot, which it stands on; 0 for arm strikes
+// and clips that are not strikes.
+std::uint32_t db_clip_support_foot(const DbClip& clip);
+// The last frame of a leg strike, up to its hit, where its support foot is planted; -1 when it never is.
+int db_clip_support_down_until(const MotionDatabaseView& db, const DbClip& clip);
 
 } // namespace kumite
