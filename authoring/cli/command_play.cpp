@@ -44,7 +44,9 @@ const CommandSpec& play_spec() {
          {"fighters", "N", "fighters side by side against the same user (default 1)"},
          {"tracker", "SOURCE", "dtrack:PORT[:BODY] (no BODY: the only 6d body, else the 3d markers' centroid), dtrack:PORT:HEAD,LEFT,RIGHT\n"
                               "(the hands too: 6d body or 3d marker ids), replay:FILE.csv (t,x,y,z[,lx,ly,lz,rx,ry,rz]), or\n"
-                              "simulate:still|wander|walk[:SPEED]|dodge|punch|counter|FILE (a user script; default simulate:still)"},
+                              "simulate:still|wander|walk[:SPEED]|dodge|punch|counter|FILE (a user script; default simulate:still), or\n"
+                              "capture:FILE.bvh[:DISTANCE[:START_S]] (a recorded person: its head and hands, facing the fighter, its mean\n"
+                              "head DISTANCE m in front (default 1.2), from START_S s into the capture, looping at its end)"},
          {"tracker-config", "FILE.json", "the room: bind address, room-to-world transform, room bounds (dtrack)"},
          {"commands", "SOURCE", "stdin, tcp:PORT (127.0.0.1) or script:FILE ('<time_s> <command>' per line)"},
          {"headless", "", "no window"},
@@ -86,12 +88,30 @@ bool display_present() {
     return (x11 && *x11) || (wayland && *wayland);
 }
 
+// What the user is when it is a recorded person (else none): which capture, placed where, and how far it got.
+std::optional<nlohmann::json> tracker_source_json(const Bout& bout) {
+    const CaptureUser* capture = bout.tracker().capture();
+    if (!capture) return std::nullopt;
+    const Eigen::Vector3d head = capture->mean_head();
+    return nlohmann::json{{"source", "capture"},
+                          {"capture", capture->path()},
+                          {"distance_m", capture->placement().distance_m},
+                          {"start_s", capture->placement().start_s},
+                          {"duration_s", capture->duration_s()},
+                          {"frame_rate_hz", 1.0 / capture->frame_time_s()},
+                          {"performer_height_m", capture->performer_height_m()},
+                          {"mean_head", {head.x(), head.y(), head.z()}},
+                          {"at_end", "loops"},
+                          {"loops", capture->loops()}};
+}
+
 } // namespace
 
 nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
     const FighterEvent& event = bout_event.event;
     nlohmann::json line = {{"t", event.t_s}, {"type", fighter_event_name(event.type)}, {"fighter", bout_event.fighter}};
     const Retriever& retriever = bout.retriever();
+    if (const CaptureUser* capture = bout.tracker().capture()) line["capture_s"] = capture->capture_time_s();
     switch (event.type) {
     case FighterEvent::Type::order:
         line["command"] = retriever.semantics_name(event.semantics);
@@ -346,6 +366,13 @@ int run_play(int argc, char** argv) {
         events_out.open(events_temporary);
         if (!events_out) return input_error(*events_path + ": cannot write the events file");
     }
+    if (events_out.is_open()) {
+        if (const std::optional<nlohmann::json> source = tracker_source_json(bout)) {
+            nlohmann::json line = {{"t", 0.0}, {"type", "tracker_source"}};
+            line.update(*source);
+            events_out << line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+        }
+    }
     auto after_step = [&] {
         if (!events_out.is_open()) return;
         for (const BoutEvent& event : bout.events()) {
@@ -387,6 +414,7 @@ int run_play(int argc, char** argv) {
         }
     }
     nlohmann::json report = play_report_json(bout);
+    if (const std::optional<nlohmann::json> source = tracker_source_json(bout)) report["tracker_source"] = *source;
     report["realtime"] = realtime;
     report["viewer"] = viewer;
     if (viewer) report["viewer_drawing"] = {{"renderer", viewer_outcome.renderer}, {"body_meshes_uploaded", viewer_outcome.body_mesh_uploads}};

@@ -47,8 +47,12 @@ Result<std::unique_ptr<HeadTracker>> HeadTracker::open(std::string_view spec_vie
         Result<ReplayTrack> read = ReplayTrack::read(spec.substr(7));
         if (!read) return read.error();
         tracker->m_replay = std::move(*read);
+    } else if (spec.starts_with("capture:")) {
+        Result<CaptureUser> read = CaptureUser::open(std::string_view(spec).substr(8));
+        if (!read) return read.error();
+        tracker->m_capture = std::move(*read);
     } else {
-        return make_error(ErrorCode::invalid, "--tracker must be dtrack:PORT[:HEAD[,LEFT,RIGHT]], replay:FILE or simulate:still|wander|walk[:SPEED]|dodge|punch|counter|FILE, not '" + spec + "'");
+        return make_error(ErrorCode::invalid, "--tracker must be dtrack:PORT[:HEAD[,LEFT,RIGHT]], replay:FILE, capture:FILE.bvh[:DISTANCE[:START_S]] or simulate:still|wander|walk[:SPEED]|dodge|punch|counter|FILE, not '" + spec + "'");
     }
     return tracker;
 }
@@ -68,6 +72,10 @@ const Eigen::Vector3d* HeadTracker::head(double t_s) {
     if (m_scripted) {
         m_head = m_scripted->head(t_s);
         m_hands = m_scripted->hands(t_s);
+        return &m_head;
+    }
+    if (m_capture) {
+        m_head = m_capture->head(t_s, m_hands);
         return &m_head;
     }
     if (m_replay) {

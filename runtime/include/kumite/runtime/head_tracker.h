@@ -1,9 +1,11 @@
 #pragma once
 // The user's head, from whichever source the room has (ARCHITECTURE.md "Inputs from the room"), behind one
 // interface: `dtrack:PORT[:HEAD[,LEFT,RIGHT]]` (A.R.T. DTrack UDP, live; the hands are 6d bodies or 3d markers
-// by id), `replay:FILE` (a CSV of t,x,y,z[,lx,ly,lz,rx,ry,rz]), or `simulate:still|wander|walk[:SPEED]|dodge|punch|counter|FILE`
-// (a simulated or scripted user, deterministic with the seed). The user's hands come with the head, when tracked.
+// by id), `replay:FILE` (a CSV of t,x,y,z[,lx,ly,lz,rx,ry,rz]), `capture:FILE.bvh[:DISTANCE[:START_S]]` (a recorded
+// person: capture_user.h), or `simulate:still|wander|walk[:SPEED]|dodge|punch|counter|FILE` (a simulated or scripted
+// user, deterministic with the seed). The user's hands come with the head, when tracked.
 
+#include "kumite/runtime/capture_user.h"
 #include "kumite/runtime/dtrack_receiver.h"
 #include "kumite/runtime/replay_track.h"
 #include "kumite/runtime/simulated_user.h"
@@ -36,12 +38,15 @@ public:
     long long rejected() const { return m_receiver ? m_receiver->stats().rejected() : 0; }
     // A message for the supervisor, once (then null): see DtrackReceiver::take_notice.
     const char* take_notice() { return m_receiver ? m_receiver->take_notice() : nullptr; }
+    // The recorded person, when the source is `capture:` (else null).
+    const CaptureUser* capture() const { return m_capture ? &*m_capture : nullptr; }
 
 private:
     HeadTracker() = default;
     std::optional<SimulatedUser> m_simulated;
     std::optional<ScriptedUser> m_scripted;
     std::optional<ReplayTrack> m_replay;
+    std::optional<CaptureUser> m_capture;
     std::unique_ptr<DtrackReceiver> m_receiver;
     HeadSample m_sample;
     Eigen::Vector3d m_head = Eigen::Vector3d::Zero();

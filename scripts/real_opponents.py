@@ -1,0 +1,130 @@
+#!/usr/bin/env python3
+"""Bouts against recorded people: every opponent capture as the tracked user (`--tracker capture:FILE`, head and
+both hands, 1.2 m in front of the fighter, facing it) for the capture's length, an order every 2 s (punch and kick
+alternately, sides alternating), for each character. Prints a table per opponent x character on stderr and one
+JSON document on stdout: strikes and hits, orders performed / queued / expired / ignored, and the opponent's
+strikes at the fighter (seen, blocked, slipped, landed, missed).
+
+  scripts/real_opponents.py [--db DB.kdb] [--opponents GLOB,...] [--characters kid,scout,brawler,runner,giant]
+                            [--aim predicted] [--distance 1.2] [--max-seconds 60] [--jobs 2]
+
+Default opponents: ../shared/mocap/cmu14-boxing/box-*.bvh (shadow boxing) and ../shared/mocap/hachaj-kata/*.bvh
+(kata stepping towards the fighter).
+"""
+import argparse
+import concurrent.futures
+import glob
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+shared = os.path.join(os.path.dirname(root), "shared", "mocap")
+DEFAULT_OPPONENTS = ",".join([os.path.join(shared, "cmu14-boxing", "box-*.bvh"), os.path.join(shared, "hachaj-kata", "*.bvh")])
+
+
+def capture_seconds(kumite, path):
+    info = json.loads(subprocess.run([kumite, "inspect", path, "--json"], check=True, capture_output=True, text=True).stdout)
+    return info["duration_s"]
+
+
+def bout(args, work, opponent, seconds, character):
+    name = f"{os.path.basename(os.path.dirname(opponent))}_{os.path.basename(opponent)}_{character}"
+    script = os.path.join(work, name + ".orders")
+    with open(script, "w") as out:
+        t, n = 1.0, 0
+        while t < seconds - 1.0:
+            out.write(f"{t:.2f} {'punch' if n % 2 == 0 else 'kick'} {'left' if (n // 2) % 2 == 0 else 'right'}\n")
+            t += 2.0
+            n += 1
+    report = os.path.join(work, name + ".json")
+    command = [args.kumite, "play"] + ([args.db] if args.db else []) + [
+        "--headless", "--duration", f"{seconds:.3f}", "--tracker", f"capture:{opponent}:{args.distance}", "--character", character,
+        "--commands", f"script:{script}", "--aim", args.aim, "--seed", "1", "--report", report]
+    if args.events:
+        command += ["--events", os.path.join(args.events, name + ".jsonl")]
+    done = subprocess.run(command, capture_output=True, text=True)
+    if done.returncode != 0:
+        sys.exit(f"real_opponents: {' '.join(command)} failed: {done.stderr.strip()}")
+    return json.load(open(report))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--db", default=None, help="database (default: kumite's default database)")
+    parser.add_argument("--opponents", default=DEFAULT_OPPONENTS, help="comma-separated globs of BVH captures")
+    parser.add_argument("--characters", default="kid,scout,brawler,runner,giant")
+    parser.add_argument("--aim", default="predicted")
+    parser.add_argument("--distance", type=float, default=1.2)
+    parser.add_argument("--max-seconds", type=float, default=60.0, help="bouts last the capture's length, at most this")
+    parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
+    parser.add_argument("--events", default=None, help="a folder to keep each bout's events in")
+    parser.add_argument("--kumite", default=os.path.join(root, "build", "bin", "kumite"))
+    args = parser.parse_args()
+
+    opponents = sorted(path for pattern in args.opponents.split(",") for path in glob.glob(pattern))
+    if not opponents:
+        sys.exit(f"real_opponents: no capture matches {args.opponents}")
+    characters = args.characters.split(",")
+    if args.events:
+        os.makedirs(args.events, exist_ok=True)
+    rows = []
+    with tempfile.TemporaryDirectory() as work, concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
+        seconds = {opponent: min(args.max_seconds, capture_seconds(args.kumite, opponent)) for opponent in opponents}
+        futures = {(opponent, character): pool.submit(bout, args, work, opponent, seconds[opponent], character)
+                   for opponent in opponents for character in characters}
+        for (opponent, character), future in futures.items():
+            report = future.result()
+            user = report["user_strikes"]
+            orders = report.get("order_outcomes", {})
+            rows.append({"opponent": os.path.relpath(opponent, shared) if opponent.startswith(shared) else opponent,
+                         "character": character, "seconds": seconds[opponent],
+                         "orders": report["orders"], "performed": orders.get("performed", report["strikes"]),
+                         "queued": orders.get("queued", 0), "expired": orders.get("expired", 0),
+                         "ignored": report["ignored_orders"], "strikes": report["strikes"], "hits": report["hits"],
+                         "user_seen": user["seen"], "blocked": user["blocked"], "slipped": user["slipped"],
+                         "landed": user["hit_by_user"], "user_missed": user["missed"],
+                         "joint_limit_violations": report["joint_limit_violations"] + user["joint_limit_violations"],
+                         "defence_foot_shift_m": user["foot_shift_m"]})
+
+    def rate(a, b):
+        return a / b if b else None
+
+    def fmt(a, b):
+        return f"{a}/{b}" + (f" {100.0 * a / b:3.0f}%" if b else "     ")
+
+    print(f"{'opponent':36s} {'character':9s} {'hits':>11s} {'orders(p/q/e/i)':>16s} {'defended':>11s} {'landed':>6s}", file=sys.stderr)
+    for row in rows:
+        would_land = row["blocked"] + row["slipped"] + row["landed"]
+        print(f"{row['opponent']:36s} {row['character']:9s} {fmt(row['hits'], row['strikes']):>11s} "
+              f"{row['orders']:3d}({row['performed']}/{row['queued']}/{row['expired']}/{row['ignored']}) "
+              f"{fmt(row['blocked'] + row['slipped'], would_land):>11s} {row['landed']:6d}", file=sys.stderr)
+    per_opponent = {}
+    for row in rows:
+        total = per_opponent.setdefault(row["opponent"], {"strikes": 0, "hits": 0, "defended": 0, "would_land": 0})
+        total["strikes"] += row["strikes"]
+        total["hits"] += row["hits"]
+        total["defended"] += row["blocked"] + row["slipped"]
+        total["would_land"] += row["blocked"] + row["slipped"] + row["landed"]
+    for total in per_opponent.values():
+        total["hit_rate"] = rate(total["hits"], total["strikes"])
+        total["defended_rate"] = rate(total["defended"], total["would_land"])
+    overall = {key: sum(t[key] for t in per_opponent.values()) for key in ("strikes", "hits", "defended", "would_land")}
+    overall["hit_rate"] = rate(overall["hits"], overall["strikes"])
+    overall["defended_rate"] = rate(overall["defended"], overall["would_land"])
+    worst_hits = min(per_opponent.items(), key=lambda item: item[1]["hit_rate"] if item[1]["hit_rate"] is not None else 2.0)
+    worst_defence = min(per_opponent.items(), key=lambda item: item[1]["defended_rate"] if item[1]["defended_rate"] is not None else 2.0)
+    print("per opponent:", file=sys.stderr)
+    for opponent, total in per_opponent.items():
+        print(f"  {opponent:36s} hits {fmt(total['hits'], total['strikes']):>11s}  defended {fmt(total['defended'], total['would_land']):>11s}",
+              file=sys.stderr)
+    print(f"overall: hits {fmt(overall['hits'], overall['strikes'])}, defended {fmt(overall['defended'], overall['would_land'])}; "
+          f"worst hits {worst_hits[0]}, worst defence {worst_defence[0]}", file=sys.stderr)
+    print(json.dumps({"aim": args.aim, "distance_m": args.distance, "order_every_s": 2.0, "overall": overall,
+                      "per_opponent": per_opponent, "bouts": rows}, indent=2))
+
+
+if __name__ == "__main__":
+    main()
