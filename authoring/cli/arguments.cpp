@@ -1,6 +1,9 @@
 #include "arguments.h"
 
 #include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
 
 #include <algorithm>
 #include <iostream>
@@ -26,6 +29,19 @@ Result<long long> Arguments::integer(const std::string& flag, long long min, lon
     if (error != std::errc() || rest != end || number < min || number > max) {
         return make_error(ErrorCode::invalid, "--" + flag + " must be a whole number from " + std::to_string(min) + " to " +
                                                   std::to_string(max) + ", not '" + *text + "'");
+    }
+    return number;
+}
+
+Result<double> Arguments::number(const std::string& flag, double min, double max, double fallback, const std::string& unit) const {
+    const std::optional<std::string> text = value(flag);
+    if (!text) return fallback;
+    char* end = nullptr;
+    const double number = std::strtod(text->c_str(), &end);
+    if (text->empty() || end != text->c_str() + text->size() || !std::isfinite(number) || number < min || number > max) {
+        std::ostringstream range;
+        range << "--" << flag << " must be " << min << " to " << max << " " << unit << ", not '" << *text << "'";
+        return make_error(ErrorCode::invalid, range.str());
     }
     return number;
 }

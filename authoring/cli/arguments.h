@@ -39,6 +39,8 @@ struct Arguments {
     std::optional<std::string> value(const std::string& flag) const;
     // The flag as a whole number in [min, max], `fallback` when absent; an error says which flag and why.
     Result<long long> integer(const std::string& flag, long long min, long long max, long long fallback) const;
+    // The flag as a finite number in [min, max] (`unit` names it in the error: "seconds"), `fallback` when absent.
+    Result<double> number(const std::string& flag, double min, double max, double fallback, const std::string& unit) const;
 };
 
 // Parses argv after the subcommand name. `--help` is reported as help_requested.

@@ -3,6 +3,7 @@
 // possible, deterministic with --seed) unless --realtime or a live tracker.
 
 #include "capture_loading.h"
+#include "partial_file.h"
 #include "character_catalog.h"
 #include "default_database.h"
 #include "commands.h"
@@ -56,11 +57,13 @@ const CommandSpec& play_spec() {
          {"realtime", "", "step on the wall clock"},
          {"seed", "N", "seed of the simulated user (default 1)"},
          {"lead", "S", "the least time from an order's strike start to its contact (default 0.4 s)"},
+         {"steer-until", "S", "predicted aim: the strike follows the head until S before its contact (default 0.15 s; 0: never steers)"},
          {"variety", "N", "prefer a clip not used in the last N strikes when one scores within 0.15 of the best (default 6, 0: always the best)"},
          {"no-defence", "", "the fighter does not block or slip the user's strikes (also the command 'defence on|off', the viewer's D key)"},
          {"aim", "latched|predicted", "strike the head where it was at the order (default), or where it will be at the contact\n"
                                       "if it keeps its course (also the command 'aim latched|predicted' and the viewer's A key)"},
          {"record", "OUT.bvh|OUT.glb", "the first fighter's motion on the starting character (glTF: with its body)"},
+         {"record-user", "OUT.csv", "the user as the tracker gave it, every frame: t,x,y,z[,lx,ly,lz,rx,ry,rz] (replay it with --tracker replay:OUT.csv)"},
          {"events", "OUT.jsonl", "one JSON object per event"},
          {"report", "OUT.json", "frames, frame times, orders, strikes, hits, misses, impacts, overshoot, joint-limit violations, tracker counts"},
          characters_dir_flag(), json_flag()}};
@@ -105,6 +108,20 @@ std::optional<nlohmann::json> tracker_source_json(const Bout& bout) {
                           {"loops", capture->loops()}};
 }
 
+// One line of the user's recording: t, head, hands (nan when a hand is not tracked); nothing while the tracker has
+// no head (a gap, as a replay reads it).
+void write_user_line(std::ostream& out, const Bout& bout) {
+    if (!bout.head()) return;
+    const Eigen::Vector3d& head = *bout.head();
+    out << bout.now_s() << "," << head.x() << "," << head.y() << "," << head.z();
+    const UserHands& hands = bout.hands();
+    for (int side = 0; side < 2; ++side) {
+        if (hands.present[side]) out << "," << hands.world[side].x() << "," << hands.world[side].y() << "," << hands.world[side].z();
+        else out << ",nan,nan,nan";
+    }
+    out << "\n";
+}
+
 } // namespace
 
 nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
@@ -114,10 +131,15 @@ nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
     if (const CaptureUser* capture = bout.tracker().capture()) line["capture_s"] = capture->capture_time_s();
     switch (event.type) {
     case FighterEvent::Type::order:
+    case FighterEvent::Type::order_queued:
+    case FighterEvent::Type::order_performed:
+    case FighterEvent::Type::order_expired:
         line["command"] = retriever.semantics_name(event.semantics);
         line["side"] = side_text(event.side);
         line["kind"] = label_text(strike_kind_name(event.kind));
         line["height"] = label_text(strike_height_name(event.height));
+        if (event.type == FighterEvent::Type::order_performed || event.type == FighterEvent::Type::order_expired) line["waited_s"] = event.waited_s;
+        if (event.type == FighterEvent::Type::order_expired) line["why"] = event.why;
         break;
     case FighterEvent::Type::ignored_order:
         line["why"] = event.why;
@@ -146,6 +168,7 @@ nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
         line["head_speed_mps"] = event.head_speed_mps;
         line["prediction_error_m"] = event.prediction_error_m;
         line["retrieval_offset_m"] = event.retrieval_offset_m;
+        line["steered_m"] = event.steered_m;
         line["target_part"] = target_part_name(event.target_part);
         line["reachable"] = event.reachable;
         break;
@@ -213,6 +236,9 @@ nlohmann::json play_report_json(const Bout& bout) {
             {"hits", counters.hits},
             {"misses", counters.misses},
             {"ignored_orders", counters.ignored_orders},
+            {"order_outcomes",
+             {{"performed", counters.orders_performed}, {"queued", counters.orders_queued}, {"expired", counters.orders_expired},
+              {"refused", counters.ignored_orders}}},
             {"tracker_packets", bout.tracker().packets()},
             {"tracker_rejected", bout.tracker().rejected()},
             {"command_to_strike_frames", {{"max", max_latency}, {"mean", mean_latency}}},
@@ -247,12 +273,10 @@ int run_play(int argc, char** argv) {
     if (!seed) return usage_error(play_spec(), seed.error().message);
     const Result<long long> variety = arguments.integer("variety", 0, k_max_variety_recent, 6);
     if (!variety) return usage_error(play_spec(), variety.error().message);
-    double lead_s = 0.4;
-    if (const std::optional<std::string> text = arguments.value("lead")) {
-        char* end = nullptr;
-        lead_s = std::strtod(text->c_str(), &end);
-        if (end == text->c_str() || *end != '\0' || !(lead_s >= 0.0) || lead_s > 5.0) return usage_error(play_spec(), "--lead must be 0 to 5 seconds");
-    }
+    const Result<double> lead_s = arguments.number("lead", 0.0, 5.0, 0.4, "seconds");
+    if (!lead_s) return usage_error(play_spec(), lead_s.error().message);
+    const Result<double> steer_until_s = arguments.number("steer-until", 0.0, 5.0, FighterSettings{}.steer_until_s, "seconds");
+    if (!steer_until_s) return usage_error(play_spec(), steer_until_s.error().message);
     FighterAim aim = FighterAim::latched;
     if (const std::optional<std::string> text = arguments.value("aim")) {
         const std::optional<FighterAim> parsed = fighter_aim_from_name(*text);
@@ -329,7 +353,8 @@ int run_play(int argc, char** argv) {
     }
     BoutOptions options;
     options.fighters = static_cast<int>(*fighters_count);
-    options.lead_s = lead_s;
+    options.lead_s = *lead_s;
+    options.fighter.steer_until_s = *steer_until_s;
     options.fighter.aim = aim;
     options.fighter.defence.enabled = !arguments.has("no-defence");
     options.fighter.variety_recent = static_cast<int>(*variety);
@@ -359,24 +384,25 @@ int run_play(int argc, char** argv) {
     if (stream) bout.set_stream(std::move(stream));
     bout.set_message_handler([](std::string_view message) { std::cerr << "kumite play: " << message; });
 
-    std::ofstream events_out;
-    const std::optional<std::string> events_path = arguments.value("events");
-    const std::string events_temporary = events_path ? *events_path + ".partial" : "";
-    if (events_path) {
-        events_out.open(events_temporary);
-        if (!events_out) return input_error(*events_path + ": cannot write the events file");
-    }
-    if (events_out.is_open()) {
+    PartialFile events_out, user_out;
+    if (const std::optional<std::string> path = arguments.value("events")) {
+        if (Result<void> opened = events_out.open(*path, "the events file"); !opened) return input_error(opened.error().message);
         if (const std::optional<nlohmann::json> source = tracker_source_json(bout)) {
             nlohmann::json line = {{"t", 0.0}, {"type", "tracker_source"}};
             line.update(*source);
-            events_out << line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+            events_out.stream() << line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
         }
     }
+    if (const std::optional<std::string> path = arguments.value("record-user")) {
+        if (Result<void> opened = user_out.open(*path, "the user's recording"); !opened) return input_error(opened.error().message);
+        user_out.stream() << "# t,x,y,z,lx,ly,lz,rx,ry,rz: the user's head and hands (nan: not tracked), world metres\n" << std::fixed;
+        user_out.stream().precision(6);
+    }
     auto after_step = [&] {
+        if (user_out.is_open()) write_user_line(user_out.stream(), bout);
         if (!events_out.is_open()) return;
         for (const BoutEvent& event : bout.events()) {
-            events_out << play_event_json(bout, event).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+            events_out.stream() << play_event_json(bout, event).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
         }
     };
 
@@ -400,11 +426,8 @@ int run_play(int argc, char** argv) {
         }
     }
 
-    if (events_out.is_open()) {
-        events_out.close();
-        std::error_code error;
-        std::filesystem::rename(events_temporary, *events_path, error);
-        if (error) return input_error(*events_path + ": cannot finish the events file: " + error.message());
+    for (PartialFile* file : {&events_out, &user_out}) {
+        if (Result<void> finished = file->finish(); !finished) return input_error(finished.error().message);
     }
     if (const std::optional<std::string> path = arguments.value("record")) {
         const BvhFile& start = bout.starting_character_file();

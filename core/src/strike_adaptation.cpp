@@ -148,6 +148,13 @@ void StrikeAdapter::begin(const StrikePlan& plan, const MirFrame& current, const
     m_approach = m_approaches[0];
 }
 
+void StrikeAdapter::retarget(const Eigen::Vector3d& target_world) {
+    const Eigen::Vector3d move = target_world - m_plan.target_world;
+    m_plan.target_world = target_world;
+    m_offset_at_contact += move;
+    m_stop_point += move;
+}
+
 double StrikeAdapter::past_stop(const Eigen::Vector3d& point) const {
     double past = 0.0;
     for (int k = 0; k < m_approach_count; ++k) past = std::max(past, (point - m_stop_point).dot(m_approaches[k]));

@@ -209,6 +209,8 @@ private:
             break;
         }
         case FighterEvent::Type::ignored_order: std::snprintf(text, sizeof text, "%.1f s  order ignored: %s", e.t_s, e.why); break;
+        case FighterEvent::Type::order_queued: std::snprintf(text, sizeof text, "%.1f s  order waits", e.t_s); break;
+        case FighterEvent::Type::order_expired: std::snprintf(text, sizeof text, "%.1f s  order expired: %s", e.t_s, e.why); break;
         case FighterEvent::Type::user_strike_end:
             std::snprintf(text, sizeof text, "%.1f s  user's %s at the %s: %s", e.t_s, e.user_strike.hand == 0 ? "left" : "right",
                           e.user_strike.at_head ? "head" : "chest", user_strike_outcome_name(e.user_strike.outcome));

@@ -169,6 +169,12 @@ void Bout::step(double t_s) {
                 m_order_frame[f] = frame;
                 break;
             case FighterEvent::Type::ignored_order: ++m_counters.ignored_orders; break;
+            case FighterEvent::Type::order_queued:
+                ++m_counters.orders;
+                ++m_counters.orders_queued;
+                break;
+            case FighterEvent::Type::order_performed: ++m_counters.orders_performed; break;
+            case FighterEvent::Type::order_expired: ++m_counters.orders_expired; break;
             case FighterEvent::Type::state:
                 if (event.state == FighterState::strike && m_order_frame[f] >= 0) {
                     m_counters.command_to_strike_frames.add(double(frame - m_order_frame[f]));

@@ -64,6 +64,9 @@ const char* fighter_event_name(FighterEvent::Type type) {
     case FighterEvent::Type::character: return "character";
     case FighterEvent::Type::user_strike: return "user_strike";
     case FighterEvent::Type::user_strike_end: return "user_strike_end";
+    case FighterEvent::Type::order_queued: return "order_queued";
+    case FighterEvent::Type::order_performed: return "order_performed";
+    case FighterEvent::Type::order_expired: return "order_expired";
     }
     return "?";
 }
@@ -107,16 +110,8 @@ void Fighter::push_event(const FighterEvent& event) {
     if (m_event_count < static_cast<int>(m_events.size())) m_events[m_event_count++] = event;
 }
 
-void Fighter::emit_ignored(double t_s, const char* why) {
-    FighterEvent event;
-    event.type = FighterEvent::Type::ignored_order;
-    event.t_s = t_s;
-    event.semantics = m_pending_order.semantics;
-    event.side = m_pending_order.side;
-    event.kind = m_pending_order.kind;
-    event.height = m_pending_order.height;
-    event.why = why;
-    push_event(event);
+void Fighter::emit_ignored(double, const char* why) {
+    emit_order_event(FighterEvent::Type::ignored_order, m_pending_order, m_pending_ordered_s, why);
 }
 
 void Fighter::enter(FighterState state, double t_s) {
@@ -132,44 +127,74 @@ void Fighter::enter(FighterState state, double t_s) {
 
 bool Fighter::order(const StrikeOrder& order) {
     const char* why = "";
+    if (!order_fits(order, why)) { // the pending and waiting orders, if any, stay as they were
+        emit_order_event(FighterEvent::Type::ignored_order, order, m_now_s, why);
+        return false;
+    }
+    if (!busy()) {
+        emit_order_event(FighterEvent::Type::order, order, m_now_s);
+        take_order(order);
+        m_pending_ordered_s = m_now_s;
+        return true;
+    }
+    if (m_settings.order_wait_s <= 0.0) {
+        emit_order_event(FighterEvent::Type::ignored_order, order, m_now_s, m_defence.active() ? "defending" : "already striking");
+        return false;
+    }
+    // The latest order waits; one already waiting gives way to it.
+    if (m_queued) emit_order_event(FighterEvent::Type::order_expired, m_queued_order, m_queued_since_s, "a later order took its place");
+    m_queued = true;
+    m_queued_order = order;
+    m_queued_since_s = m_now_s;
+    emit_order_event(FighterEvent::Type::order_queued, order, m_now_s);
+    return true;
+}
+
+void Fighter::emit_order_event(FighterEvent::Type type, const StrikeOrder& order, double since_s, const char* why) {
     FighterEvent event;
+    event.type = type;
     event.t_s = m_now_s;
     event.semantics = order.semantics;
     event.side = order.side;
     event.kind = order.kind;
     event.height = order.height;
-    if (!order_fits(order, why)) { // the pending order, if any, stays as it was
-        event.type = FighterEvent::Type::ignored_order;
-        event.why = why;
-        push_event(event);
-        return false;
-    }
-    m_pending_order = order;
-    event.type = FighterEvent::Type::order;
+    event.why = why;
+    event.waited_s = m_now_s - since_s;
     push_event(event);
+}
+
+bool Fighter::busy() const {
+    return m_state == FighterState::strike || m_state == FighterState::recover || m_pending || m_defence.active();
+}
+
+void Fighter::take_order(const StrikeOrder& order) {
+    m_pending_order = order;
     m_pending = true;
     m_pending_since_s = m_now_s;
     m_pending_head = m_head;
     m_pending_tried = false;
     m_pending_part = 0;
-    return true;
+}
+
+void Fighter::serve_queue(double t_s) {
+    if (!m_queued) return;
+    if (t_s - m_queued_since_s > m_settings.order_wait_s) {
+        m_queued = false;
+        return emit_order_event(FighterEvent::Type::order_expired, m_queued_order, m_queued_since_s, "waited too long");
+    }
+    if (busy()) return;
+    m_queued = false;
+    take_order(m_queued_order);
+    m_pending_ordered_s = m_queued_since_s;
 }
 
 bool Fighter::order_fits(const StrikeOrder& order, const char*& why) const {
-    if (m_state == FighterState::strike || m_state == FighterState::recover || m_pending) {
-        why = "already striking";
-        return false;
-    }
     if (order.semantics < 0) {
         why = "the database has no such strike";
         return false;
     }
     if (m_retriever.candidate_count(order.semantics, order.side, order.kind, order.height) == 0) {
         why = "the database has no strike of that side, kind and height";
-        return false;
-    }
-    if (m_defence.active()) {
-        why = "defending";
         return false;
     }
     return true;
@@ -346,7 +371,16 @@ FighterEvent Fighter::strike_event(FighterEvent::Type type, double t_s) const {
     event.retrieval_offset_m = m_strike_offset_m;
     event.target_part = m_strike_part;
     event.reachable = m_strike_reachable;
+    event.steered_m = (m_plan.target_world - m_planned_target).norm();
     return event;
+}
+
+void Fighter::steer_strike(double to_contact_s) {
+    if (m_settings.steer_until_s <= 0.0 || m_strike_aim != FighterAim::predicted || !m_tracking || !m_head_motion.ready()) return;
+    if (m_contact_done || to_contact_s <= m_settings.steer_until_s) return;
+    const Eigen::Vector3d target = m_head_motion.predict(to_contact_s) - Eigen::Vector3d(0.0, m_strike_drop_m, 0.0);
+    m_bodies[m_character]->adapter.retarget(target);
+    m_plan.target_world = target;
 }
 
 void Fighter::play_strike(double t_s) {
@@ -361,6 +395,7 @@ void Fighter::play_strike(double t_s) {
     // At the contact: a head still at the latched target takes the impact (the strike stops there); a dodged
     // strike follows through from this frame on.
     const bool at_contact = !m_contact_done && index >= contact;
+    steer_strike((contact - index) * m_db.meta.frame_time_s);
     if (at_contact) {
         m_strike_impact = m_tracking && (aimed_point_now() - m_plan.target_world).norm() <= m_settings.hit_radius_m;
         adapter.set_impact(m_strike_impact);
@@ -443,6 +478,7 @@ void Fighter::step(double t_s, const Eigen::Vector3d* head, const UserHands* han
         emit_ignored(t_s, "no head to aim at");
     }
     defend(t_s);
+    serve_queue(t_s);
     if (m_pending && (m_state == FighterState::rest || m_state == FighterState::approach) && !m_defence.active()) start_strike(t_s);
 
     switch (m_state) {

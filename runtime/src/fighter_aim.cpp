@@ -119,6 +119,8 @@ void Fighter::start_strike(double t_s) {
     m_strike_varied = m_pending_varied;
     remember_strike(found.clip);
     m_strike_range_m = distance_to_user();
+    m_planned_target = m_plan.target_world;
+    emit_order_event(FighterEvent::Type::order_performed, m_strike_order, m_pending_ordered_s);
     enter(FighterState::strike, t_s); // plan_strike began the adaptation
 }
 

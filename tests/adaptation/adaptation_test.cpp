@@ -191,3 +191,47 @@ TEST_CASE("adaptation: a kick keeps its support foot down, and never starts on t
     }
     CHECK(highest_right > 0.6); // the kicking foot did rise
 }
+
+TEST_CASE("adaptation: a target moved during the strike is met at the contact, the hit point's path staying smooth", "[adaptation]") {
+    for (const char* character : {"kid", "brawler", "giant"}) {
+        const Scene scene(character);
+        StrikeAdapter steered(scene.rig(), scene.database.view()), planned(scene.rig(), scene.database.view());
+        RetrievalWorkspace workspace = scene.retriever->make_workspace();
+        const RetrievalResult natural =
+            scene.retriever->query(scene.query("punch", Side::left, Eigen::Vector3d(0.1, 1.0, 0.5)), workspace);
+        REQUIRE(natural.found);
+        const Eigen::Vector3d shoulder = scene.rig().positions()[scene.anatomy().limbs[int(Limb::arm_l)].root];
+        const Eigen::Vector3d first_target = shoulder + 0.8 * (natural.contact_point_world - shoulder);
+        // The head drifts 1 cm a frame sideways and down during the strike: 8 cm by the time it stops moving.
+        const Eigen::Vector3d drift(0.008, -0.006, 0.0);
+        const StrikePlan plan = scene.begin(steered, "punch", Side::left, first_target);
+        scene.begin(planned, "punch", Side::left, first_target);
+        Pose pose;
+        INFO(character);
+        Eigen::Vector3d target = first_target;
+        std::vector<Eigen::Vector3d> path;
+        for (int i = 0; i <= steered.contact_index(); ++i) {
+            if (i > 0 && i <= 10 && i < steered.contact_index()) {
+                target += drift;
+                steered.retarget(target);
+            }
+            const AdaptedFrame frame = steered.step(i, pose);
+            path.push_back(frame.effector);
+            CHECK(bone_length_error(scene.character->skeleton(), steered.positions()) < 1e-9);
+            if (frame.contact) CHECK((frame.effector - target).norm() < 1e-6);
+        }
+        CHECK(steered.plan().target_world == target);
+        CHECK(steered.stop_point() == target);
+        CHECK(plan.target_world == first_target);
+        // Smooth: no frame-to-frame change of the hit point's velocity larger than the unsteered strike's largest
+        // plus what the drift adds (1 cm a frame at most).
+        auto largest_velocity_change = [](const std::vector<Eigen::Vector3d>& points) {
+            double largest = 0.0;
+            for (std::size_t k = 2; k < points.size(); ++k) largest = std::max(largest, (points[k] - 2.0 * points[k - 1] + points[k - 2]).norm());
+            return largest;
+        };
+        std::vector<Eigen::Vector3d> planned_path;
+        for (int i = 0; i <= planned.contact_index(); ++i) planned_path.push_back(planned.step(i, pose).effector);
+        CHECK(largest_velocity_change(path) <= largest_velocity_change(planned_path) + drift.norm());
+    }
+}

@@ -482,7 +482,7 @@ TEST_CASE("cli: play runs a headless bout: report keys, events, a recording, the
     CHECK(file_bytes(folder / "a.jsonl") == file_bytes(folder / "b.jsonl"));
     const nlohmann::json report = nlohmann::json::parse(file_bytes(folder / "a.json"));
     for (const char* key : {"frames", "frame_time_us", "missed_frames", "orders", "strikes", "hits", "misses", "ignored_orders",
-                            "tracker_packets", "tracker_rejected", "command_to_strike_frames"}) {
+                            "tracker_packets", "tracker_rejected", "command_to_strike_frames", "order_outcomes"}) {
         CHECK(report.contains(key));
     }
     CHECK(report["frames"] == 780);

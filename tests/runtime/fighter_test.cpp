@@ -279,7 +279,9 @@ TEST_CASE("fighter: the same bout with the same seed gives the same events", "[r
 TEST_CASE("fighter: approach, strike, ignored orders, recovery and rest", "[runtime][corpus]") {
     const MotionDatabaseContent* content = reference_database();
     if (!content) return;
-    Bout b(content->view());
+    FighterSettings no_waiting;
+    no_waiting.order_wait_s = 0.0; // the paper's fighter: orders during a strike are refused
+    Bout b(content->view(), "brawler", no_waiting);
     const Eigen::Vector3d far_user(0.0, 1.65, 2.5);
     b.run(0, 120, [&](double) { return std::optional(far_user); });
     CHECK(b.entered(FighterState::approach)); // too far: it steps in
@@ -339,7 +341,9 @@ TEST_CASE("fighter: switching character mid-strike carries the strike on, on the
 TEST_CASE("fighter: an order refused while another waits leaves the waiting one as it was", "[runtime][corpus]") {
     const MotionDatabaseContent* content = reference_database();
     if (!content) return;
-    Bout b(content->view());
+    FighterSettings no_waiting;
+    no_waiting.order_wait_s = 0.0;
+    Bout b(content->view(), "brawler", no_waiting);
     const Eigen::Vector3d user(0.0, 1.6, 0.9);
     b.run(0, 240, [&](double) { return std::optional(user); });
     REQUIRE(b.fighter->order(b.retriever->semantics_id("kick"), Side::right));
@@ -349,6 +353,55 @@ TEST_CASE("fighter: an order refused while another waits leaves the waiting one 
     REQUIRE(strike != b.events.end());
     CHECK(b.db.string(b.db.clips[strike->clip].semantics) == "kick"); // the first order, not the refused one
     CHECK(strike->side == Side::right);
+}
+
+TEST_CASE("fighter: orders while striking wait and are performed after it; a later one takes the place of a waiting one; "
+          "one that waits too long expires", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    if (!content) return;
+    Bout b(content->view());
+    const Eigen::Vector3d user(0.0, 1.6, 0.9);
+    b.run(0, 240, [&](double) { return std::optional(user); });
+    const int kick = b.retriever->semantics_id("kick"), punch = b.retriever->semantics_id("punch");
+    REQUIRE(b.fighter->order(kick, Side::right));
+    b.run(240, 250, [&](double) { return std::optional(user); });
+    REQUIRE(b.fighter->state() == FighterState::strike);
+    // Two orders during the kick: the first waits, the second takes its place.
+    REQUIRE(b.fighter->order(punch, Side::left));
+    REQUIRE(b.fighter->order(punch, Side::right));
+    b.run(250, 420, [&](double) { return std::optional(user); });
+    std::vector<const FighterEvent*> strikes, queued, expired, performed;
+    for (const FighterEvent& e : b.events) {
+        if (e.type == FighterEvent::Type::strike) strikes.push_back(&e);
+        if (e.type == FighterEvent::Type::order_queued) queued.push_back(&e);
+        if (e.type == FighterEvent::Type::order_expired) expired.push_back(&e);
+        if (e.type == FighterEvent::Type::order_performed) performed.push_back(&e);
+    }
+    CHECK(queued.size() == 2);
+    REQUIRE(expired.size() == 1);
+    CHECK(expired[0]->side == Side::left);
+    CHECK_THAT(std::string(expired[0]->why), Catch::Contains("later order"));
+    REQUIRE(strikes.size() == 2); // the kick, then the waiting right punch as soon as the kick had recovered
+    CHECK(b.db.string(b.db.clips[strikes[1]->clip].semantics) == "punch");
+    CHECK(strikes[1]->side == Side::right);
+    REQUIRE(performed.size() == 2);
+    CHECK(performed[1]->waited_s > 0.0);
+    CHECK(performed[1]->waited_s <= FighterSettings{}.order_wait_s);
+    CHECK(b.count(FighterEvent::Type::ignored_order) == 0);
+
+    // A wait shorter than the strike: the order expires instead.
+    FighterSettings short_wait;
+    short_wait.order_wait_s = 0.1;
+    Bout c(content->view(), "brawler", short_wait);
+    c.run(0, 240, [&](double) { return std::optional(user); });
+    REQUIRE(c.fighter->order(kick, Side::right));
+    c.run(240, 250, [&](double) { return std::optional(user); });
+    REQUIRE(c.fighter->order(punch, Side::left));
+    c.run(250, 420, [&](double) { return std::optional(user); });
+    CHECK(c.count(FighterEvent::Type::order_expired) == 1);
+    CHECK(c.count(FighterEvent::Type::strike) == 1);
+    const auto waited = std::find_if(c.events.begin(), c.events.end(), [](const FighterEvent& e) { return e.type == FighterEvent::Type::order_expired; });
+    CHECK_THAT(std::string(waited->why), Catch::Contains("waited too long"));
 }
 
 TEST_CASE("fighter: a strike the head waits for stops at it, one the head leaves follows through", "[runtime][corpus]") {
@@ -375,4 +428,45 @@ TEST_CASE("fighter: a strike the head waits for stops at it, one the head leaves
             CHECK(end->t_s > strike->t_s);
         }
     }
+}
+
+TEST_CASE("fighter: predicted aim steers a strike onto a head that bobs, until shortly before the contact", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    if (!content) return;
+    // A boxer's head: bobbing and weaving, 12 cm sideways at 0.8 Hz and 5 cm up and down at 1.3 Hz (peak speed
+    // ~0.6 m/s, the recorded boxers' median), 0.95 m in front. Punches and kicks every 1.5 s.
+    auto head = [](double t) {
+        return std::optional(Eigen::Vector3d(0.12 * std::sin(2.0 * 3.14159265 * 0.8 * t), 1.6 + 0.05 * std::sin(2.0 * 3.14159265 * 1.3 * t), 0.95));
+    };
+    auto hits_with = [&](double steer_until_s, double& steered_m) {
+        FighterSettings settings;
+        settings.aim = FighterAim::predicted;
+        settings.steer_until_s = steer_until_s;
+        Bout b(content->view(), "brawler", settings);
+        b.run(0, 240, head);
+        for (int order = 0; order < 12; ++order) {
+            b.fighter->order(b.retriever->semantics_id(order % 2 ? "kick" : "punch"), order % 4 < 2 ? Side::left : Side::right);
+            b.run(240 + 90 * order, 240 + 90 * (order + 1), head);
+        }
+        int hits = 0, strikes = 0;
+        steered_m = 0.0;
+        for (const FighterEvent& e : b.events) {
+            if (e.type != FighterEvent::Type::strike) continue;
+            ++strikes;
+            hits += e.hit;
+            steered_m = std::max(steered_m, e.steered_m);
+        }
+        for (const FighterEvent& e : b.events) {
+            if (e.type == FighterEvent::Type::strike_end) CHECK(e.joint_limit_violations == 0);
+        }
+        REQUIRE(strikes >= 10);
+        return double(hits) / strikes;
+    };
+    double steered_m = 0.0, unsteered_m = 0.0;
+    const double steered = hits_with(0.15, steered_m), planned = hits_with(0.0, unsteered_m);
+    INFO("hit rate steered " << steered << " (target moved up to " << steered_m << " m), planned " << planned);
+    CHECK(unsteered_m == 0.0);
+    CHECK(steered_m > 0.02);
+    CHECK(steered >= 0.9);
+    CHECK(steered > planned);
 }

@@ -120,6 +120,11 @@ public:
     AdaptationSettings& settings() { return m_settings; }
     bool arm_strike() const { return m_arm; }
     bool middle_strike() const { return m_middle; } // a knee or elbow strike (segment_strikes_with_middle)
+    // Moves the target during the strike (a fighter that keeps its eyes on a moving head until shortly before the
+    // contact): d(tc) moves with it, so the offset ramp carries the hit point to the new target by the contact; the
+    // stop point moves along (the target, or out of reach the closest point, shifted the same). Cheap: no decode,
+    // no allocation. The move shows in the next step() by ramp(t) times the target's move.
+    void retarget(const Eigen::Vector3d& target_world);
     // Step 6 on (the default at begin()) or off; the fighter turns it off when the user is no longer at the target.
     void set_impact(bool impact) { m_impact = impact; }
     bool impact() const { return m_impact; }

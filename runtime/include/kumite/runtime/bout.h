@@ -43,6 +43,7 @@ struct BoutEvent {
 struct BoutCounters {
     long long frames = 0, missed_frames = 0;
     long long orders = 0, strikes = 0, hits = 0, misses = 0, ignored_orders = 0;
+    long long orders_queued = 0, orders_performed = 0, orders_expired = 0; // how orders ended (ignored_orders: refused)
     // Summaries in fixed memory, so that a bout of hours stays flat.
     ValueHistogram frame_us{0.1, 1e7};          // every frame's cost
     ValueHistogram command_to_strike_frames{0.5, 1e6};
@@ -88,6 +89,7 @@ public:
     std::span<const BoutEvent> events() const { return m_events; }
     const BoutCounters& counters() const { return m_counters; }
     bool quit_requested() const { return m_quit; }
+    double now_s() const { return m_now_s; } // the time of the last step
     double rate_hz() const { return m_options.rate_hz; }
     bool live() const { return m_tracker->live(); }
     const HeadTracker& tracker() const { return *m_tracker; }

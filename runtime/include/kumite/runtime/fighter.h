@@ -69,6 +69,15 @@ struct FighterSettings {
     bool reach_fallback = true;      // aim lower on the body when the head is out of reach (else strike at the head)
     double reach_tolerance_m = 0.05; // a strike reaches a point when its adaptation gets the hit point this close
     DefenceSettings defence;         // blocks and slips against the user's tracked hands (defence.h)
+    // With predicted aim, the fighter keeps its eyes on the head during a strike: every frame until this long
+    // before the contact it aims again at where the head will be at the contact (the adaptation carries the hit
+    // point there); the last `steer_until_s` fly on as they are, as a person's punch does once it is too late to
+    // correct it (visual feedback takes ~0.15 s). 0 or less: the target stays as planned (no steering).
+    double steer_until_s = 0.15;
+    // An order that comes while the fighter strikes, recovers, defends or has an order under way waits this long
+    // and is carried out as soon as the fighter can; a later one takes its place (the earlier expires), and one
+    // that waits too long expires. 0: refused at once ("already striking"), as the paper's fighter does.
+    double order_wait_s = 1.5;
     double wait_for_reach_s = 1.5;   // an order no strike reaches waits this long for the fighter to step in (the
                                      // target stays latched), then strikes at the head anyway
     // Variety: when the best strike for an order is one of the last `variety_recent` clips struck, the best other
@@ -80,7 +89,11 @@ struct FighterSettings {
 inline constexpr int k_max_variety_recent = 8;
 
 struct FighterEvent {
-    enum class Type { order, ignored_order, state, strike, strike_end, tracker_lost, tracker_back, character, user_strike, user_strike_end };
+    // Every order ends once, as order_performed (its strike began), ignored_order (refused, with why) or
+    // order_expired (it waited order_wait_s, or a later order took its place); it starts as order (taken at once)
+    // or order_queued (waiting).
+    enum class Type { order, ignored_order, state, strike, strike_end, tracker_lost, tracker_back, character, user_strike, user_strike_end,
+                      order_queued, order_performed, order_expired };
     Type type = Type::state;
     double t_s = 0.0;
     FighterState state = FighterState::rest; // state events: the new state
@@ -104,13 +117,15 @@ struct FighterEvent {
     double head_speed_mps = 0.0;             // strike events: the head's filtered speed when the strike began
     double prediction_error_m = 0.0;         // strike events: the head at the contact to the target aimed at
     double retrieval_offset_m = 0.0;         // strike events: the chosen clip's natural hit point to the target
+    double steered_m = 0.0;                  // strike events: how far steering moved the target since the start
     TargetPart target_part = TargetPart::head; // strike events: the part aimed at
     bool reachable = true;                   // strike events: the adaptation gets the hit point to the target
     UserStrikeEvent user_strike;             // user_strike (seen, the move chosen) and user_strike_end (outcome; its
                                              // joint_limit_violations and foot_shift_m: what the defence did)
     double foot_shift_m = 0.0;
     int character = -1;                      // character events
-    const char* why = "";                    // ignored orders
+    const char* why = "";                    // ignored and expired orders
+    double waited_s = 0.0;                   // order_performed and order_expired: since the order came
 };
 const char* fighter_event_name(FighterEvent::Type type);
 
@@ -123,9 +138,10 @@ public:
     Fighter(const Fighter&) = delete;
     Fighter& operator=(const Fighter&) = delete;
 
-    // An order, taken at the next step. Returns false when it is ignored at once (already striking or recovering,
-    // or a semantics the database lacks); the reason is also an event. An order the next step cannot carry out
-    // (the tracker has no head, nothing fits) is ignored then, with an event.
+    // An order, taken at the next step, or queued while the fighter is busy (FighterSettings::order_wait_s).
+    // Returns false when it is refused at once (a semantics, side, kind or height the database lacks; busy with no
+    // wait allowed); the reason is also an event. An order the fighter cannot carry out when its turn comes (the
+    // tracker has no head, nothing fits) is refused then, with an event.
     bool order(const StrikeOrder& order);
     bool order(int semantics, Side side) { return order(StrikeOrder{semantics, side}); }
     void set_character(int index);
@@ -164,6 +180,10 @@ private:
     struct Body;
     void push_event(const FighterEvent& event);
     void emit_ignored(double t_s, const char* why); // the pending order, ignored
+    void emit_order_event(FighterEvent::Type type, const StrikeOrder& order, double since_s, const char* why = "");
+    bool busy() const; // striking, recovering, defending or with an order under way: new orders wait
+    void take_order(const StrikeOrder& order); // becomes the pending order, from now
+    void serve_queue(double t_s);              // the waiting order: taken when the fighter can, or expired
     void enter(FighterState state, double t_s);
     void start_clip(int clip, double t_s, bool face_user, double step_scale = 1.0);
     void lock_feet(double t_s, int pose); // foot locking for shortened steps
@@ -172,6 +192,7 @@ private:
     void start_strike(double t_s);
     void begin_strike(); // the current body's adapter on m_plan, from m_strike_start
     void play_strike(double t_s);
+    void steer_strike(double to_contact_s); // predicted aim: the target follows the head until steer_until_s before the contact
     FighterEvent strike_event(FighterEvent::Type type, double t_s) const; // a strike or strike_end event of the strike
     void finish_frame();
     void defend(double t_s);        // follows the user's hands, starts and ends moves, emits their events
@@ -221,6 +242,10 @@ private:
     double m_pending_since_s = 0.0;
     Eigen::Vector3d m_pending_head = Eigen::Vector3d::Zero(); // the head at the order (latched aim)
     bool m_pending_tried = false; // every part was looked at once: the order waits for reach
+    double m_pending_ordered_s = 0.0; // when the supervisor gave it (earlier than m_pending_since_s if it waited)
+    bool m_queued = false;        // an order waiting while the fighter is busy
+    StrikeOrder m_queued_order;
+    double m_queued_since_s = 0.0;
     int m_pending_part = 0;       // the part to look at next while waiting
     // the clip being played (rest, approach, recover)
     int m_clip = -1;
@@ -256,6 +281,7 @@ private:
     double m_strike_drop_m = 0.0;            // the aimed point under the head
     TargetPart m_strike_part = TargetPart::head;
     bool m_strike_reachable = true;
+    Eigen::Vector3d m_planned_target = Eigen::Vector3d::Zero(); // the target when the strike began (before steering)
     Eigen::Vector3d m_previous_effector = Eigen::Vector3d::Zero();
     double m_previous_effector_s = 0.0;
     // output
