@@ -185,6 +185,7 @@ nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
         line["move"] = defence_move_name(event.user_strike.move);
         line["arm"] = event.user_strike.arm == 0 ? "left" : "right";
         line["time_to_impact_s"] = event.user_strike.time_to_impact_s;
+        line["detected"] = event.user_strike.detected;
         line["hand_speed_mps"] = event.user_strike.hand_speed_mps;
         break;
     case FighterEvent::Type::user_strike_end:
@@ -193,6 +194,8 @@ nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
         line["move"] = defence_move_name(event.user_strike.move);
         line["outcome"] = user_strike_outcome_name(event.user_strike.outcome);
         if (event.user_strike.forearm_to_path_m >= 0.0) line["forearm_to_path_m"] = event.user_strike.forearm_to_path_m;
+        line["detected"] = event.user_strike.detected;
+        if (event.user_strike.blocking_arm >= 0) line["blocking_arm"] = event.user_strike.blocking_arm == 0 ? "left" : "right";
         line["joint_limit_violations"] = event.joint_limit_violations;
         line["foot_shift_m"] = event.foot_shift_m;
         break;

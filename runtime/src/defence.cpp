@@ -68,6 +68,18 @@ void Defence::push(const UserStrikeEvent& event) {
     if (m_event_count < static_cast<int>(m_events.size())) m_events[m_event_count++] = event;
 }
 
+int Defence::forearm_met(const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body) const {
+    for (int arm = 0; arm < 2; ++arm) {
+        if (segment_distance(before, now, body.elbow[arm], body.wrist[arm]) <= m_settings.block_contact_m) return arm;
+    }
+    return -1;
+}
+
+bool Defence::body_met(const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body) const {
+    return segment_distance(before, now, body.head, body.head) <= m_settings.head_radius_m ||
+           segment_distance(before, now, body.chest, body.chest) <= m_settings.chest_radius_m;
+}
+
 void Defence::end_strike(double t_s, Hand& hand, UserStrikeOutcome outcome) {
     UserStrikeEvent event = hand.strike;
     event.ended = true;
@@ -77,36 +89,43 @@ void Defence::end_strike(double t_s, Hand& hand, UserStrikeOutcome outcome) {
     push(event);
     hand.striking = false;
     hand.armed = false;
+    // A hand that met the fighter or a forearm stays on it a moment: not a new strike until it has left.
+    hand.touching = outcome == UserStrikeOutcome::blocked || outcome == UserStrikeOutcome::hit_by_user;
 }
 
-bool Defence::block_plan(const Hand& hand, const DefenderBody& body, double time_to_impact, Eigen::Vector3d& wrist_target, int& arm) const {
+bool Defence::block_plan(const Hand& hand, const DefenderBody& body, double time_to_impact, const std::array<bool, 2>& arms,
+                         Eigen::Vector3d& wrist_target, int& arm) const {
     const double speed = hand.velocity.norm();
-    // The fighter's arm on the side the hand comes from (+X of its heading frame is its left).
-    arm = body.heading.to_heading(hand.position).x() >= 0.0 ? 0 : 1;
-    // Where the forearm meets the course: block_before_m short of the target, else half that (more time).
-    for (const double before : {m_settings.block_before_m, 0.5 * m_settings.block_before_m}) {
-        const double intercept_s = time_to_impact - before / speed;
-        const Eigen::Vector3d intercept = hand.position + hand.velocity * std::max(0.0, intercept_s);
-        const double travel = (intercept - body.wrist[arm]).norm();
-        const bool within_arm = (intercept - body.shoulder[arm]).norm() <= 0.95 * body.arm_length[arm];
-        if (intercept_s > 0.02 && within_arm && travel / intercept_s <= m_settings.max_block_speed_mps) {
-            wrist_target = intercept;
-            return true;
+    // The fighter's arm on the side the hand comes from first (+X of its heading frame is its left), then the other.
+    const int near_arm = body.heading.to_heading(hand.position).x() >= 0.0 ? 0 : 1;
+    for (const int candidate : {near_arm, 1 - near_arm}) {
+        if (!arms[candidate]) continue;
+        // Where the forearm meets the course: block_before_m short of the target, else half that (more time).
+        for (const double before : {m_settings.block_before_m, 0.5 * m_settings.block_before_m}) {
+            const double intercept_s = time_to_impact - before / speed;
+            const Eigen::Vector3d intercept = hand.position + hand.velocity * std::max(0.0, intercept_s);
+            const double travel = (intercept - body.wrist[candidate]).norm();
+            const bool within_arm = (intercept - body.shoulder[candidate]).norm() <= 0.95 * body.arm_length[candidate];
+            if (intercept_s > 0.02 && within_arm && travel / intercept_s <= m_settings.max_block_speed_mps) {
+                wrist_target = intercept;
+                arm = candidate;
+                return true;
+            }
         }
     }
     return false;
 }
 
-void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, double time_to_impact) {
+void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, double time_to_impact, const Allowed& allowed) {
     Eigen::Vector3d wrist_target;
     int arm = 0;
-    if (block_plan(hand, body, time_to_impact, wrist_target, arm)) {
+    if (block_plan(hand, body, time_to_impact, allowed.block_arms, wrist_target, arm)) {
         m_move = DefenceMove::block;
         m_arm = arm;
         m_wrist_target = wrist_target;
         const double intercept_s = std::max(0.02, time_to_impact - m_settings.block_before_m / hand.velocity.norm());
         m_ramp_s = std::max(0.03, 0.6 * intercept_s); // in place a little before the hand
-    } else {
+    } else if (allowed.slip) {
         // Off the line: from the course's closest point to the head, sideways; straight at the head, to the side
         // the course does not favour.
         const Eigen::Vector3d closest = hand.position + hand.velocity * time_to_impact;
@@ -119,6 +138,8 @@ void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, doubl
         m_move = DefenceMove::slip;
         m_slip_offset = away.norm() > 1e-9 ? Eigen::Vector3d(away.normalized() * m_settings.slip_m) : Eigen::Vector3d(m_settings.slip_m, 0.0, 0.0);
         m_ramp_s = std::max(0.03, 0.8 * time_to_impact);
+    } else {
+        return; // no arm gets there, and the trunk may not lean: taken as it comes
     }
     m_move_start_s = t_s;
     m_hold_until_s = t_s + time_to_impact + m_settings.hold_s;
@@ -127,7 +148,7 @@ void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, doubl
     hand.strike.arm = m_arm;
 }
 
-void Defence::update(double t_s, const UserHands& hands, const DefenderBody& body, bool can_start) {
+void Defence::update(double t_s, const UserHands& hands, const DefenderBody& body, const Allowed& allowed) {
     // The move's weight: in over its ramp, held until after the hand's arrival, then out.
     if (m_move != DefenceMove::none) {
         if (t_s <= m_hold_until_s) {
@@ -149,7 +170,11 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
             continue;
         }
         const Eigen::Vector3d now = hands.world[side];
-        if (!hand.seen || t_s - hand.last_s > 0.25) {
+        // A hand that jumps further in one sample than a fist flies (a tracker glitch, a recording that loops)
+        // starts a new track: its jump is not a strike.
+        const bool jumped = hand.seen && (now - hand.position).norm() > m_settings.max_hand_speed_mps * std::max(t_s - hand.last_s, 1.0 / 120.0);
+        if (jumped && hand.striking) end_strike(t_s, hand, hand.strike.move == DefenceMove::slip ? UserStrikeOutcome::slipped : UserStrikeOutcome::missed);
+        if (!hand.seen || t_s - hand.last_s > 0.25 || jumped) {
             hand = Hand{};
             hand.seen = true;
             hand.position = now;
@@ -173,18 +198,21 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
                 const double arrival = (target - now).dot(hand.velocity) / (speed * speed);
                 Eigen::Vector3d wrist_target;
                 int arm = 0;
-                if (arrival > 0.0 && block_plan(hand, body, arrival, wrist_target, arm) && arm == m_arm) m_wrist_target = wrist_target;
+                std::array<bool, 2> same_arm{};
+                same_arm[m_arm] = true;
+                if (arrival > 0.0 && block_plan(hand, body, arrival, same_arm, wrist_target, arm)) m_wrist_target = wrist_target;
             }
             if (blocking) {
                 const double to_forearm = segment_distance(before, now, body.elbow[m_arm], body.wrist[m_arm]);
                 hand.closest_forearm_m = std::min(hand.closest_forearm_m, to_forearm);
-                if (to_forearm <= m_settings.block_contact_m) {
-                    end_strike(t_s, hand, UserStrikeOutcome::blocked);
-                    continue;
-                }
             }
-            if (segment_distance(before, now, body.head, body.head) <= m_settings.head_radius_m ||
-                segment_distance(before, now, body.chest, body.chest) <= m_settings.chest_radius_m) {
+            // Any forearm on the path stops it: the blocking one, or the other held in the guard.
+            if (const int arm = forearm_met(before, now, body); arm >= 0) {
+                hand.strike.blocking_arm = arm;
+                end_strike(t_s, hand, UserStrikeOutcome::blocked);
+                continue;
+            }
+            if (body_met(before, now, body)) {
                 end_strike(t_s, hand, UserStrikeOutcome::hit_by_user);
                 continue;
             }
@@ -195,12 +223,41 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
             }
             continue;
         }
-        // A threat: a fast hand whose straight course passes near the head or chest soon (one strike per thrust).
+        // A hand that meets the fighter without having been seen coming: a strike that arrived, counted once until
+        // the hand has left (a blocked one too, when a forearm was on its way). The thrust must be a new one: a
+        // hand whose strike just ended (blocked: in the room the forearm stopped it) has to slow down first.
         const double speed = hand.velocity.norm();
-        if (!hand.armed) {
-            hand.armed = speed < m_settings.min_speed_mps; // the thrust is over (a blocked hand, in the room, stops)
+        const int forearm = forearm_met(before, now, body);
+        const bool met = forearm >= 0 || body_met(before, now, body);
+        if (!hand.armed) hand.armed = speed < m_settings.min_speed_mps;
+        // Closing in on what it meets (the nearer of head and chest) at a striking speed, not drawing back from it.
+        const Eigen::Vector3d& part = (now - body.head).norm() < (now - body.chest).norm() ? body.head : body.chest;
+        const double closing_mps = (part - before).norm() > 1e-9 ? hand.velocity.dot((part - before).normalized()) : 0.0;
+        if (met && hand.armed && !hand.touching && closing_mps >= m_settings.contact_speed_mps) {
+            hand.touching = true;
+            hand.strike = UserStrikeEvent{};
+            hand.strike.t_s = t_s;
+            hand.strike.hand = side;
+            hand.strike.at_head = (now - body.head).norm() < (now - body.chest).norm();
+            hand.strike.hand_speed_mps = speed;
+            hand.strike.detected = false;
+            hand.strike.blocking_arm = forearm;
+            push(hand.strike);
+            end_strike(t_s, hand, forearm >= 0 ? UserStrikeOutcome::blocked : UserStrikeOutcome::hit_by_user);
             continue;
         }
+        if (hand.touching) {
+            // Still on the fighter (10 cm of margin): the same strike.
+            const double margin = 0.1;
+            hand.touching = (now - body.head).norm() < m_settings.head_radius_m + margin ||
+                            (now - body.chest).norm() < m_settings.chest_radius_m + margin ||
+                            segment_distance(now, now, body.elbow[0], body.wrist[0]) < m_settings.block_contact_m + margin ||
+                            segment_distance(now, now, body.elbow[1], body.wrist[1]) < m_settings.block_contact_m + margin;
+            continue;
+        }
+        // A threat: a fast hand whose straight course passes near the head or chest soon (one strike per thrust;
+        // armed again once the thrust is over: a blocked hand, in the room, stops).
+        if (!hand.armed) continue;
         if (speed < m_settings.min_speed_mps) continue;
         double best_miss = m_settings.threat_radius_m, best_time = 0.0;
         int aimed = -1; // 0 head, 1 chest
@@ -221,9 +278,7 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
         hand.strike.at_head = aimed == 0;
         hand.strike.time_to_impact_s = best_time;
         hand.strike.hand_speed_mps = speed;
-        if (m_settings.enabled && can_start && m_move == DefenceMove::none) {
-            start_move(t_s, hand, body, best_time);
-        }
+        if (m_settings.enabled && allowed.any() && m_move == DefenceMove::none) start_move(t_s, hand, body, best_time, allowed);
         push(hand.strike);
     }
 }

@@ -85,6 +85,7 @@ Fighter::Fighter(const MotionDatabaseView& database, const Retriever& retriever,
         body->rig->stand_at_origin(m_pose, database);
         body->encoder.encode(m_mir, m_pose.view());
         body->decoder.decode(m_pose, m_mir);
+        m_shown_by_adapter = false;
         m_defended_frame = m_mir;
         body->adapter.begin({first_clip_of(database, "punch") >= 0 ? first_clip_of(database, "punch") : 0, 0, 0, {}, {}}, m_mir,
                             {true, true}, {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
@@ -99,7 +100,15 @@ Fighter::Fighter(const MotionDatabaseView& database, const Retriever& retriever,
 
 Fighter::~Fighter() = default;
 
-std::span<const Eigen::Vector3d> Fighter::positions() const { return m_bodies[m_character]->decoder.model_positions(); }
+std::span<const Eigen::Vector3d> Fighter::positions() const {
+    const Body& body = *m_bodies[m_character];
+    return m_shown_by_adapter ? body.adapter.positions() : body.decoder.model_positions();
+}
+
+std::span<const Eigen::Quaterniond> Fighter::rotations() const {
+    const Body& body = *m_bodies[m_character];
+    return m_shown_by_adapter ? body.adapter.rotations() : body.decoder.model_rotations();
+}
 
 Eigen::Vector3d Fighter::part_position(BodyPart part) const {
     const int joint = m_bodies[m_character]->rig->anatomy().body_map.joint(part);
@@ -238,6 +247,7 @@ void Fighter::set_character(int index) {
     push_event(event);
     if (m_state == FighterState::strike) { // the strike carries on, on the new skeleton
         m_bodies[m_character]->decoder.decode(m_pose, m_strike_start);
+        m_shown_by_adapter = false;
         begin_strike();
     }
 }
@@ -306,6 +316,7 @@ void Fighter::play_clip(double t_s) {
     }
     Body& body = *m_bodies[m_character];
     body.decoder.decode(m_pose, m_mir);
+    m_shown_by_adapter = false;
     if (m_clip_scale < 0.999) lock_feet(t_s, clip.first_pose + whole);
     else m_pins = {};
     apply_defence();
@@ -341,6 +352,7 @@ void Fighter::lock_feet(double t_s, int pose) {
         }
     }
     body.decoder.decode(m_pose, m_mir, m_pins);
+    m_shown_by_adapter = false;
     body.encoder.encode(m_mir, m_pose.view()); // the next blend starts from what is shown
 }
 
@@ -401,6 +413,7 @@ void Fighter::play_strike(double t_s) {
         adapter.set_impact(m_strike_impact);
     }
     const AdaptedFrame frame = adapter.step(index, m_pose);
+    m_shown_by_adapter = true;
     m_strike_overshoot_m = std::max(m_strike_overshoot_m, frame.past_target_m);
     m_strike_violations += joint_violation_count(frame.joint_violations);
     if (at_contact) {
@@ -419,6 +432,7 @@ void Fighter::play_strike(double t_s) {
     m_previous_effector = frame.effector;
     m_previous_effector_s = t_s;
     body.encoder.encode(m_mir, m_pose.view());
+    apply_defence(); // a block with the free arm (decodes the frame again with its edit, when one is on)
     if (index >= adapter.frame_count() - 1) {
         FighterEvent event = strike_event(FighterEvent::Type::strike_end, t_s);
         event.overshoot_m = m_strike_overshoot_m;
@@ -432,9 +446,8 @@ void Fighter::play_strike(double t_s) {
 }
 
 void Fighter::finish_frame() {
-    Body& body = *m_bodies[m_character];
-    const auto positions = body.decoder.model_positions();
-    m_heading = pose_heading(body.rig->skeleton(), body.rig->anatomy(), positions, body.decoder.model_rotations());
+    const Body& body = *m_bodies[m_character];
+    m_heading = pose_heading(body.rig->skeleton(), body.rig->anatomy(), positions(), rotations());
 }
 
 void Fighter::step(double t_s, const Eigen::Vector3d* head, const UserHands* hands) {
@@ -490,6 +503,7 @@ void Fighter::step(double t_s, const Eigen::Vector3d* head, const UserHands* han
         if (t_s - m_state_since_s >= m_settings.hold_s && m_clip != m_guard_clip) start_clip(m_guard_clip, t_s, false);
         if (t_s - m_state_since_s < m_settings.hold_s) { // hold the last pose
             m_bodies[m_character]->decoder.decode(m_pose, m_mir);
+            m_shown_by_adapter = false;
             finish_frame();
             return;
         }

@@ -18,7 +18,7 @@ namespace kumite {
 void Fighter::defend(double t_s) {
     const Body& body = *m_bodies[m_character];
     const RestAnatomy& anatomy = body.rig->anatomy();
-    const auto positions = body.decoder.model_positions();
+    const auto positions = this->positions(); // the pose shown last frame (a strike's adapted one included)
     DefenderBody defender;
     defender.head = part_position(BodyPart::head);
     defender.chest = part_position(BodyPart::chest);
@@ -30,8 +30,21 @@ void Fighter::defend(double t_s) {
         defender.arm_length[arm] = limb.length();
     }
     defender.heading = m_heading;
-    const bool can_start = m_tracking && (m_state == FighterState::rest || m_state == FighterState::approach);
-    m_defence.update(t_s, m_hands, defender, can_start);
+    // At rest, approaching or recovering any move; while striking, a block with an arm the strike leaves free (the
+    // trunk is the strike's: no slip); nothing without a head to face.
+    Defence::Allowed allowed;
+    if (!m_tracking) {
+        allowed = Defence::Allowed{{false, false}, false};
+    } else if (m_state == FighterState::strike) {
+        allowed.slip = false;
+        const int segment = m_db.clips[m_plan.clip].segment;
+        const int striking_limb = limb_of_segment(static_cast<BodyPart>(std::max(0, segment)));
+        if (striking_limb == int(Limb::arm_l)) allowed.block_arms[0] = false;
+        if (striking_limb == int(Limb::arm_r)) allowed.block_arms[1] = false;
+    } else if (m_state == FighterState::hold) {
+        allowed = Defence::Allowed{{false, false}, false};
+    }
+    m_defence.update(t_s, m_hands, defender, allowed);
     for (const UserStrikeEvent& seen : m_defence.events()) {
         FighterEvent event;
         event.type = seen.ended ? FighterEvent::Type::user_strike_end : FighterEvent::Type::user_strike;
@@ -53,7 +66,11 @@ void Fighter::apply_defence() {
     if (block <= 0.0 && slip <= 0.0) return;
     Body& body = *m_bodies[m_character];
     const RestAnatomy& anatomy = body.rig->anatomy();
-    const auto before = body.decoder.model_positions(); // the undefended pose (until the decode below)
+    // The undefended pose: the shown decode, or a strike's adapted frame (decoded again from its MIR frame, for the
+    // arm's natural wrist below).
+    const bool striking = m_state == FighterState::strike;
+    if (striking) body.decoder.decode(m_pose, m_mir);
+    const auto before = striking ? body.adapter.positions() : body.decoder.model_positions();
     // What the edits must not break, measured against the undefended pose: the arms' bends, the trunk, the feet.
     std::array<Eigen::Vector3d, 2> bends, ankles;
     for (int side = 0; side < 2; ++side) {
@@ -63,9 +80,10 @@ void Fighter::apply_defence() {
     }
     m_defended_frame = m_mir;
     // The feet as the shown pose has them: lock_feet re-encoded the shown frame, so pinned feet stay pinned and a
-    // released foot's fading offset is in the frame already (applying it again would move that foot twice).
+    // released foot's fading offset is in the frame already (applying it again would move that foot twice). A
+    // strike's frame holds its adapted limbs and planted feet already.
     LimbPins& pins = m_defence_pins;
-    pins = m_pins;
+    pins = m_state == FighterState::strike ? LimbPins{} : m_pins;
     for (Eigen::Vector3d& offset : pins.extremity_offset_world) offset.setZero();
     if (slip > 0.0) {
         // Lean above the spine's base so the head moves by the slip's offset: a turn about the horizontal axis
@@ -98,6 +116,7 @@ void Fighter::apply_defence() {
         }
     }
     body.decoder.decode(m_pose, m_defended_frame, pins);
+    m_shown_by_adapter = false;
     const auto after = body.decoder.model_positions();
     unsigned violations = trunk_turn(anatomy, body.decoder.model_rotations()) > JointLimits{}.trunk_turn_rad ? k_trunk_violation : 0u;
     for (int side = 0; side < 2; ++side) {

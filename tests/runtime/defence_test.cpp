@@ -107,3 +107,85 @@ TEST_CASE("defence: too late to block, it slips; wide or slow hands are not stri
     CHECK(thrust(wide, 0, Eigen::Vector3d(0.6, 1.5, 0.8), Eigen::Vector3d(0.6, 1.6, -0.5), 6.0, false).empty());
     CHECK(thrust(slow, 0, Eigen::Vector3d(-0.15, 1.45, 0.8), Eigen::Vector3d(0.0, 1.6, 0.1), 1.5, false).empty());
 }
+
+namespace {
+
+// The user's left hand (the other held still, wide) along `path(t)` for a second at 60 Hz against `body`.
+template <class Path>
+std::vector<UserStrikeEvent> follow(Defence& defence, Path&& path, const DefenderBody& body, const Defence::Allowed& allowed = {}) {
+    std::vector<UserStrikeEvent> events;
+    for (int frame = 0; frame < 60; ++frame) {
+        const double t = frame / 60.0;
+        UserHands hands;
+        hands.present = {true, true};
+        hands.world[0] = path(t);
+        hands.world[1] = Eigen::Vector3d(-0.5, 1.3, 0.8);
+        defence.update(t, hands, body, allowed);
+        for (const UserStrikeEvent& event : defence.events()) events.push_back(event);
+        defence.clear_events();
+    }
+    return events;
+}
+
+// From `from` to `to` at `speed` after 0.2 s still, then held.
+auto straight(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double speed) {
+    return [=](double t) {
+        const double s = std::clamp((t - 0.2) * speed / (to - from).norm(), 0.0, 1.0);
+        return Eigen::Vector3d(from + s * (to - from));
+    };
+}
+
+} // namespace
+
+TEST_CASE("defence: a hand that arrives unseen is counted; a forearm held in the guard on its path blocks it", "[runtime]") {
+    // Too slow to be seen coming (2.2 m/s, under the 2.5 m/s of a threat), fast enough to be a strike arriving.
+    Defence unseen;
+    const auto events = follow(unseen, straight(Eigen::Vector3d(0.0, 1.6, 0.5), Eigen::Vector3d(0.0, 1.6, 0.0), 2.2), guard_body());
+    REQUIRE(events.size() == 2);
+    CHECK_FALSE(events[0].detected);
+    CHECK(events[0].move == DefenceMove::none);
+    CHECK(events[1].outcome == UserStrikeOutcome::hit_by_user);
+    CHECK_FALSE(events[1].detected);
+    // Held there, drawn back, pushed in again slowly: the same arrival is not counted twice, a slow one not at all.
+    Defence slow;
+    CHECK(follow(slow, straight(Eigen::Vector3d(0.0, 1.6, 0.5), Eigen::Vector3d(0.0, 1.6, 0.0), 1.5), guard_body()).empty());
+
+    // The fighter's left forearm across the face (a high guard), no defence move: the punch stops on it.
+    DefenderBody high_guard = guard_body();
+    high_guard.elbow[0] = Eigen::Vector3d(0.15, 1.5, 0.2);
+    high_guard.wrist[0] = Eigen::Vector3d(-0.1, 1.65, 0.2);
+    Defence off(DefenceSettings{.enabled = false});
+    const auto guarded = follow(off, straight(Eigen::Vector3d(0.0, 1.6, 0.8), Eigen::Vector3d(0.0, 1.6, 0.0), 6.0), high_guard);
+    REQUIRE(guarded.size() == 2);
+    CHECK(guarded[0].detected);
+    CHECK(guarded[0].move == DefenceMove::none);
+    CHECK(guarded[1].outcome == UserStrikeOutcome::blocked);
+    CHECK(guarded[1].blocking_arm == 0);
+}
+
+TEST_CASE("defence: only the allowed moves start: the free arm blocks while the other strikes, no slip mid-strike", "[runtime]") {
+    // From the fighter's left (+X): its left arm would block; with that arm striking, the right arm reaches across.
+    const Eigen::Vector3d from(0.15, 1.45, 0.8), to(0.0, 1.6, 0.0);
+    Defence left_striking;
+    const auto across = follow(left_striking, straight(from, to, 6.0), guard_body(), Defence::Allowed{{false, true}, false});
+    REQUIRE(!across.empty());
+    CHECK(across[0].move == DefenceMove::block);
+    CHECK(across[0].arm == 1);
+    // No arm free and no slip (a kick that needs both arms? no: a strike that holds the trunk): taken as it comes.
+    Defence nothing_free;
+    const auto taken = follow(nothing_free, straight(from, to, 6.0), guard_body(), Defence::Allowed{{false, false}, false});
+    REQUIRE(taken.size() == 2);
+    CHECK(taken[0].move == DefenceMove::none);
+    CHECK(taken[1].outcome == UserStrikeOutcome::hit_by_user);
+    // Too late for any arm and slipping not allowed: no move either.
+    Defence late;
+    const auto too_late = follow(late, straight(Eigen::Vector3d(0.05, 1.55, 0.3), to, 8.0), guard_body(), Defence::Allowed{{true, true}, false});
+    REQUIRE(!too_late.empty());
+    CHECK(too_late[0].move == DefenceMove::none);
+}
+
+TEST_CASE("defence: a hand that jumps (a tracker glitch, a recording that loops) is not a strike", "[runtime]") {
+    Defence defence;
+    auto jump = [](double t) { return t < 0.5 ? Eigen::Vector3d(0.0, 1.4, 1.2) : Eigen::Vector3d(0.0, 1.6, 0.05); };
+    CHECK(follow(defence, jump, guard_body()).empty());
+}

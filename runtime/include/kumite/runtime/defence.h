@@ -7,9 +7,11 @@
 //           before the target (the arm's extremity driven by a world offset, as a strike drives its hit point:
 //           two-bone IK with the clip's swivel), when the wrist can get there in time at a plausible speed;
 //   slip  — otherwise the trunk leans the head (and chest) off the hand's line, turning above the spine's base.
-// Each user strike ends as `blocked` (the hand's path this frame met the blocking forearm), `hit_by_user` (it met
-// the head or chest), `slipped` (it went back without either while the fighter slipped) or `missed` (without
-// either, and no slip). Nothing here allocates.
+// Each user strike ends as `blocked` (the hand's path this frame met a forearm of the fighter: the blocking one, or
+// the other held in the guard), `hit_by_user` (it met the head or chest), `slipped` (it went back without either
+// while the fighter slipped) or `missed` (without either, and no slip). A hand that meets the head or chest (or a
+// forearm on the way) without having been seen coming is a user strike too, `detected` false: it is counted, not
+// defended. Nothing here allocates.
 
 #include "kumite/core/heading_frame.h"
 #include "kumite/runtime/simulated_hands.h"
@@ -26,15 +28,17 @@ const char* user_strike_outcome_name(UserStrikeOutcome outcome);
 
 struct DefenceSettings {
     bool enabled = true;
-    double horizon_s = 0.35;          // a hand arriving within this long is a threat
-    double min_speed_mps = 3.0;       // slower hands are not strikes
-    double threat_radius_m = 0.25;    // how close its course must pass to the head or chest
+    double horizon_s = 0.5;          // a hand arriving within this long is a threat
+    double min_speed_mps = 2.5;       // slower hands are not strikes
+    double threat_radius_m = 0.3;    // how close its course must pass to the head or chest
     double head_radius_m = 0.12;      // a hand this close to the head (its path this frame) hits it
     double chest_radius_m = 0.16;
     double block_contact_m = 0.05;    // a hand path this close to the blocking forearm is blocked
     double block_before_m = 0.3;      // where the forearm meets the path: this far before the target
     double max_block_speed_mps = 8.0; // faster wrist moves are not plausible: slip instead
     double slip_m = 0.3;              // how far the head leans off the line
+    double max_hand_speed_mps = 15.0; // a hand that moves faster between samples jumped (a glitch): a new track
+    double contact_speed_mps = 2.0;   // a hand meeting the head or chest at least this fast is a strike that arrived
     double hold_s = 0.2;              // the move held after the hand's expected arrival
     double release_s = 0.3;           // back to the guard
 };
@@ -60,6 +64,8 @@ struct UserStrikeEvent {
     double hand_speed_mps = 0.0;
     UserStrikeOutcome outcome = UserStrikeOutcome::missed;
     double forearm_to_path_m = -1.0; // ended blocks: the closest the hand's path came to the blocking forearm
+    bool detected = true;            // false: it arrived without having been seen coming (counted, not defended)
+    int blocking_arm = -1;           // blocked: the forearm that met it (0 left, 1 right)
 };
 
 // The distance between segments [a0, a1] and [b0, b1].
@@ -71,8 +77,17 @@ public:
     DefenceSettings& settings() { return m_settings; }
     bool enabled() const { return m_settings.enabled; }
 
-    // One frame: the user's hands, the fighter's body, whether a move may start (at rest or approaching).
-    void update(double t_s, const UserHands& hands, const DefenderBody& body, bool can_start);
+    // One frame: the user's hands, the fighter's body, which moves may start: blocks with which arms ([left,
+    // right]; an arm that strikes cannot block), and the slip (not while a strike drives the trunk).
+    struct Allowed {
+        std::array<bool, 2> block_arms{true, true};
+        bool slip = true;
+        bool any() const { return block_arms[0] || block_arms[1] || slip; }
+    };
+    void update(double t_s, const UserHands& hands, const DefenderBody& body, const Allowed& allowed);
+    void update(double t_s, const UserHands& hands, const DefenderBody& body, bool can_start) {
+        update(t_s, hands, body, can_start ? Allowed{} : Allowed{{false, false}, false});
+    }
     void reset(); // tracking lost, a character switch: forget hands and moves
 
     bool active() const { return m_move != DefenceMove::none; } // a move is on (orders wait)
@@ -97,12 +112,18 @@ private:
         UserStrikeEvent strike;
         double closest_forearm_m = 1e9;
         int receding_frames = 0;
+        bool touching = false;       // met the fighter unseen, and has not left it since
     };
+    // The forearm (0 left, 1 right) the hand's path from `before` to `now` meets, or -1.
+    int forearm_met(const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body) const;
+    // Whether the path meets the head or the chest.
+    bool body_met(const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body) const;
     void push(const UserStrikeEvent& event);
-    void start_move(double t_s, Hand& hand, const DefenderBody& body, double time_to_impact);
-    // Where the blocking wrist should go to meet the hand's course in time, and with which arm; false when it
-    // cannot get there at a plausible speed.
-    bool block_plan(const Hand& hand, const DefenderBody& body, double time_to_impact, Eigen::Vector3d& wrist_target, int& arm) const;
+    void start_move(double t_s, Hand& hand, const DefenderBody& body, double time_to_impact, const Allowed& allowed);
+    // Where the blocking wrist should go to meet the hand's course in time, and with which arm (the one on the side
+    // it comes from first, else the other, among `arms`); false when none can get there at a plausible speed.
+    bool block_plan(const Hand& hand, const DefenderBody& body, double time_to_impact, const std::array<bool, 2>& arms,
+                    Eigen::Vector3d& wrist_target, int& arm) const;
     void end_strike(double t_s, Hand& hand, UserStrikeOutcome outcome);
 
     DefenceSettings m_settings;

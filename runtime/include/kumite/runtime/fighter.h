@@ -160,6 +160,7 @@ public:
     const Pose& pose() const { return m_pose; }              // on the current character
     const MirFrame& mir() const { return m_mir; }            // the pose in the MIR (to record it on any skeleton)
     std::span<const Eigen::Vector3d> positions() const;      // model positions of pose()
+    std::span<const Eigen::Quaterniond> rotations() const;   // model rotations of pose()
     Eigen::Vector3d part_position(BodyPart part) const;      // of a body part of the current character, world
     HeadingFrame heading() const { return m_heading; }
     bool has_latched_target() const { return m_state == FighterState::strike; }
@@ -285,6 +286,7 @@ private:
     Eigen::Vector3d m_previous_effector = Eigen::Vector3d::Zero();
     double m_previous_effector_s = 0.0;
     // output
+    bool m_shown_by_adapter = false; // this frame's pose is the strike adapter's decode (not the body's decoder's)
     MirFrame m_clip_frame, m_next_frame, m_mir;
     Pose m_pose;
     HeadingFrame m_heading;
