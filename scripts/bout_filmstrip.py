@@ -68,6 +68,10 @@ def main():
             segment = next((p for p in ("hand_l", "hand_r", "foot_l", "foot_r", "forearm_l", "forearm_r", "shin_l", "shin_r") if f"_{p}_" in clip), None)
             effector = parts.get(segment)
         target = np.array(event["target"]) if "target" in event else None
+        # Each row centred between the fighter's hips and the user's head at the event (both move about the room).
+        f0 = min(len(fighter) - 1, max(0, int(round(contact_s * fps))))
+        u0 = user[np.argmin(np.abs(user[:, 0] - contact_s))]
+        centre = 0.5 * (fighter[f0, parts["pelvis"]] + u0[1:4])
         for column, offset in enumerate(OFFSETS_S):
             t = contact_s + offset
             f = int(round(t * fps))
@@ -91,8 +95,8 @@ def main():
                 if target is not None:
                     axis.plot(target[h], target[v], "x", color="#CC79A7", ms=10, mew=2)
                 axis.set_aspect("equal")
-                axis.set_xlim(-0.5, 1.7) if view == 0 else axis.set_xlim(-0.9, 0.9)
-                axis.set_ylim(-0.05, 2.0) if view == 0 else axis.set_ylim(-0.5, 1.7)
+                axis.set_xlim(centre[h] - 1.1, centre[h] + 1.1)
+                axis.set_ylim(-0.05, 2.1) if view == 0 else axis.set_ylim(centre[v] - 1.1, centre[v] + 1.1)
                 axis.set_xticks([])
                 axis.set_yticks([])
                 if view == 0:

@@ -6,6 +6,8 @@
 #include "support/standing_character.h"
 
 #include "kumite/runtime/fighter.h"
+#include "kumite/runtime/capture_user.h"
+#include "kumite/core/joint_limits.h"
 #include "kumite/runtime/simulated_user.h"
 #include "kumite/formats/bvh_reader.h"
 #include "support/test_paths.h"
@@ -501,4 +503,27 @@ TEST_CASE("fighter: during a strike its body is the strike's: the hit point is w
         }
     }
     CHECK(checked);
+}
+
+TEST_CASE("fighter: a user who walks through it is followed without spinning: the trunk stays within its limits", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    const std::filesystem::path kata = kumite::test::mocap_root() / "hachaj-kata" / "fukyugata_ni.bvh";
+    if (!content || !std::filesystem::exists(kata)) return;
+    // A recorded kata performer steps right through the fighter (the kata travels; its mean head is 1.2 m away).
+    Result<CaptureUser> user = CaptureUser::open(kata.string());
+    REQUIRE(user);
+    Bout b(content->view(), "giant");
+    double largest_turn = 0.0;
+    for (int frame = 0; frame < 10 * 60; ++frame) {
+        const double t = frame / 60.0;
+        if (frame == 60) b.fighter->order(b.retriever->semantics_id("punch"), Side::left);
+        if (frame == 180) b.fighter->order(b.retriever->semantics_id("kick"), Side::left);
+        UserHands hands;
+        const Eigen::Vector3d head = user->head(t, hands);
+        b.fighter->step(t, &head, &hands);
+        b.fighter->clear_events();
+        largest_turn = std::max(largest_turn, trunk_turn(b.brawler.anatomy, b.fighter->rotations()));
+    }
+    INFO("largest trunk turn " << largest_turn * 180.0 / 3.14159265 << " deg");
+    CHECK(largest_turn <= JointLimits{}.trunk_turn_rad);
 }
