@@ -204,6 +204,13 @@ nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
     return line;
 }
 
+// Orders still under way or queued when the bout ended (every other order ended performed, refused or expired).
+static long long waiting_orders(const Bout& bout) {
+    long long waiting = 0;
+    for (int f = 0; f < bout.fighter_count(); ++f) waiting += bout.fighter(f).has_waiting_order();
+    return waiting;
+}
+
 nlohmann::json play_report_json(const Bout& bout) {
     const BoutCounters& counters = bout.counters();
     nlohmann::json by_target;
@@ -241,7 +248,7 @@ nlohmann::json play_report_json(const Bout& bout) {
             {"ignored_orders", counters.ignored_orders},
             {"order_outcomes",
              {{"performed", counters.orders_performed}, {"queued", counters.orders_queued}, {"expired", counters.orders_expired},
-              {"refused", counters.ignored_orders}}},
+              {"refused", counters.ignored_orders}, {"waiting_at_end", waiting_orders(bout)}}},
             {"tracker_packets", bout.tracker().packets()},
             {"tracker_rejected", bout.tracker().rejected()},
             {"command_to_strike_frames", {{"max", max_latency}, {"mean", mean_latency}}},

@@ -263,10 +263,10 @@ HeadingFrame Fighter::heading_towards_user() const {
     HeadingFrame heading = m_heading;
     if (m_tracking) {
         const Eigen::Vector3d to_user = m_head - heading.origin;
-        // At most k_max_turn_rad per clip: a user who walks round (or, recorded, through) the fighter is followed
+        // At most k_max_turn_rad (90 degrees) per clip: a user who walks round (or, recorded, through) the fighter is followed
         // over a few clips. A larger turn at once, blended over blend_s, twists the trunk (hips and chest slerped
         // separately take different ways round near 180 degrees) and reads as a spin.
-        constexpr double k_max_turn_rad = 60.0 * 3.14159265358979 / 180.0;
+        constexpr double k_max_turn_rad = 90.0 * 3.14159265358979 / 180.0;
         if (Eigen::Vector2d(to_user.x(), to_user.z()).norm() > 0.05) {
             const double wanted = std::atan2(to_user.x(), to_user.z());
             const double turn = std::remainder(wanted - heading.yaw_rad, 2.0 * 3.14159265358979);

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <fstream>
 #include <sstream>
 
 using kumite::test::run_command;
@@ -46,6 +47,22 @@ TEST_CASE("cli: play against a recorded boxer says which capture, where, and whe
         CHECK(event["capture_s"].get<double>() == Approx(10.0 + event["t"].get<double>()).margin(1e-6));
     }
     CHECK(later > 0);
+
+    // Orders every 0.5 s, faster than strikes end: they wait, and each ends performed, refused or expired, or is
+    // still waiting when the bout ends.
+    const std::filesystem::path orders = folder / "orders.txt";
+    {
+        std::ofstream out(orders);
+        for (int k = 0; k < 16; ++k) out << 0.5 + 0.5 * k << (k % 2 ? " kick" : " punch") << "\n";
+    }
+    const auto busy = run_command(kumite + " play " + db + " --headless --duration 9 --character brawler --aim predicted --tracker capture:" +
+                                  boxer.string() + " --commands script:" + orders.string() + " --json");
+    REQUIRE(busy.status == 0);
+    const nlohmann::json outcomes = nlohmann::json::parse(busy.out)["order_outcomes"];
+    INFO(outcomes.dump());
+    CHECK(outcomes["queued"].get<int>() > 0);
+    CHECK(outcomes["performed"].get<int>() + outcomes["expired"].get<int>() + outcomes["refused"].get<int>() +
+              outcomes["waiting_at_end"].get<int>() == 16);
 
     CHECK(run_command(kumite + " play " + db + " --headless --duration 1 --tracker capture:" + boxer.string() + ":0.01").status == 2);
     const auto missing = run_command(kumite + " play " + db + " --headless --duration 1 --tracker capture:/no/such/boxer.bvh");

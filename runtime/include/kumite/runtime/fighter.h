@@ -156,6 +156,7 @@ public:
     void step(double t_s, const Eigen::Vector3d* head, const UserHands* hands = nullptr);
 
     FighterState state() const { return m_state; }
+    bool has_waiting_order() const { return m_pending || m_queued; } // taken or queued, not yet ended
     int character() const { return m_character; }
     const Pose& pose() const { return m_pose; }              // on the current character
     const MirFrame& mir() const { return m_mir; }            // the pose in the MIR (to record it on any skeleton)
