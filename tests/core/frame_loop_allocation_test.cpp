@@ -134,3 +134,26 @@ TEST_CASE("bout: a step allocates nothing while a punching user's strikes are de
     CHECK((*bout)->counters().user_strikes >= 3);
     CHECK((*bout)->counters().blocks + (*bout)->counters().slips >= 3);
 }
+
+TEST_CASE("bout: a step allocates nothing against a recorded boxer, steering strikes, queuing orders, defending", "[core][corpus]") {
+    const std::filesystem::path boxer = kumite::test::mocap_root() / "cmu14-boxing" / "box-1.bvh";
+    if (!std::filesystem::exists(boxer)) return;
+    const MotionDatabase database = golden();
+    const kumite::test::StandingCharacter brawler("brawler", database.view());
+    Result<std::unique_ptr<HeadTracker>> tracker = HeadTracker::open("capture:" + boxer.string(), DtrackConfig{}, 5);
+    REQUIRE(tracker);
+    BoutOptions options;
+    options.fighter.aim = FighterAim::predicted;
+    Result<std::unique_ptr<Bout>> bout = Bout::create(database.view(), {{"brawler", brawler.file, nullptr}}, std::move(*tracker), options);
+    REQUIRE(bout);
+    (*bout)->step(0.0);
+    kumite::test::AllocationScope scope;
+    for (int frame = 1; frame < 20 * 60; ++frame) {
+        if (frame % 42 == 0) CHECK((*bout)->command(frame % 84 ? "kick" : "punch")); // faster than strikes end: orders wait
+        (*bout)->step(frame / 60.0);
+    }
+    CHECK(scope.count() == 0);
+    CHECK((*bout)->counters().strikes >= 5);
+    CHECK((*bout)->counters().orders_queued >= 3);
+    CHECK((*bout)->counters().user_strikes >= 1); // the boxer's punches reached the fighter: the defence ran
+}
