@@ -11,6 +11,7 @@
 
 #include <cstdio>
 #include <deque>
+#include <filesystem>
 
 namespace kumite::view {
 namespace {
@@ -239,6 +240,13 @@ private:
                      .arg(c.misses)
                      .arg(c.last_contact_error_m < 0 ? QString("-") : QString("%1 cm (%2)").arg(c.last_contact_error_m * 100.0, 0, 'f', 1).arg(c.last_hit ? "hit" : "miss"))
                      .arg(m_bout.head() ? "head tracked" : "no head");
+        if (const CaptureUser* capture = m_bout.tracker().capture()) {
+            lines += QString("user: recorded, %1 at %2 s of %3 s (%4 m away, loops)\n")
+                         .arg(QString::fromStdString(std::filesystem::path(capture->path()).filename().string()))
+                         .arg(capture->capture_time_s(), 0, 'f', 1)
+                         .arg(capture->duration_s(), 0, 'f', 1)
+                         .arg(capture->placement().distance_m, 0, 'f', 2);
+        }
         if (c.user_strikes > 0 || m_bout.hands().present[0] || m_bout.hands().present[1]) {
             lines += QString("defence %1  |  user strikes %2: %3 blocked, %4 slipped, %5 landed\n")
                          .arg(fighter.defence_enabled() ? "on" : "off")
