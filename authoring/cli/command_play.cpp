@@ -57,6 +57,7 @@ const CommandSpec& play_spec() {
          {"realtime", "", "step on the wall clock"},
          {"seed", "N", "seed of the simulated user (default 1)"},
          {"lead", "S", "the least time from an order's strike start to its contact (default 0.4 s)"},
+         {"plans-per-frame", "N", "at most N fighters plan a strike in one frame, the others on the next frames, oldest order first (default 14; 0: no limit)"},
          {"steer-until", "S", "predicted aim: the strike follows the head until S before its contact (default 0.15 s; 0: never steers)"},
          {"variety", "N", "prefer a clip not used in the last N strikes when one scores within 0.15 of the best (default 6, 0: always the best)"},
          {"no-defence", "", "the fighter does not block or slip the user's strikes (also the command 'defence on|off', the viewer's D key)"},
@@ -287,6 +288,8 @@ int run_play(int argc, char** argv) {
     if (!lead_s) return usage_error(play_spec(), lead_s.error().message);
     const Result<double> steer_until_s = arguments.number("steer-until", 0.0, 5.0, FighterSettings{}.steer_until_s, "seconds");
     if (!steer_until_s) return usage_error(play_spec(), steer_until_s.error().message);
+    const Result<long long> plans_per_frame = arguments.integer("plans-per-frame", 0, 100000, BoutOptions{}.plans_per_frame);
+    if (!plans_per_frame) return usage_error(play_spec(), plans_per_frame.error().message);
     FighterAim aim = FighterAim::latched;
     if (const std::optional<std::string> text = arguments.value("aim")) {
         const std::optional<FighterAim> parsed = fighter_aim_from_name(*text);
@@ -365,6 +368,7 @@ int run_play(int argc, char** argv) {
     options.fighters = static_cast<int>(*fighters_count);
     options.lead_s = *lead_s;
     options.fighter.steer_until_s = *steer_until_s;
+    options.plans_per_frame = static_cast<int>(*plans_per_frame);
     options.fighter.aim = aim;
     options.fighter.defence.enabled = !arguments.has("no-defence");
     options.fighter.variety_recent = static_cast<int>(*variety);

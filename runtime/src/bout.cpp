@@ -54,6 +54,8 @@ Result<std::unique_ptr<Bout>> Bout::create(const MotionDatabaseView& database, s
     }
     bout->m_events.reserve(std::size_t(options.fighters) * 64);
     bout->m_order_frame.assign(std::size_t(options.fighters), -1);
+    for (auto& fighter : bout->m_fighters) bout->m_fighter_pointers.push_back(fighter.get());
+    bout->m_planning = std::make_unique<PlanningBudget>(options.plans_per_frame, bout->m_fighters.size());
     bout->m_queued.reserve(16);
     if (options.record) {
         const Character& start = *bout->m_characters[options.start_character];
@@ -159,6 +161,7 @@ void Bout::step(double t_s) {
     m_queued.clear();
 
     const long long frame = m_counters.frames;
+    m_planning->grant(m_fighter_pointers); // after the frame's orders: who plans a strike this frame
     for (std::size_t f = 0; f < m_fighters.size(); ++f) {
         Fighter& fighter = *m_fighters[f];
         fighter.step(t_s, m_have_head ? &m_head : nullptr, &m_tracker->hands());

@@ -172,6 +172,13 @@ void Fighter::emit_order_event(FighterEvent::Type type, const StrikeOrder& order
     push_event(event);
 }
 
+bool Fighter::wants_to_plan() const {
+    // As step() decides, from the state before it: a queued order becomes pending in the step when the fighter is
+    // free, so it wants to plan too.
+    const bool free_to_strike = (m_state == FighterState::rest || m_state == FighterState::approach) && !m_defence.active();
+    return free_to_strike && m_tracking && (m_pending || m_queued);
+}
+
 bool Fighter::busy() const {
     return m_state == FighterState::strike || m_state == FighterState::recover || m_pending || m_defence.active();
 }
@@ -500,7 +507,7 @@ void Fighter::step(double t_s, const Eigen::Vector3d* head, const UserHands* han
     }
     defend(t_s);
     serve_queue(t_s);
-    if (m_pending && (m_state == FighterState::rest || m_state == FighterState::approach) && !m_defence.active()) start_strike(t_s);
+    if (m_pending && (m_state == FighterState::rest || m_state == FighterState::approach) && !m_defence.active() && m_may_plan) start_strike(t_s);
 
     switch (m_state) {
     case FighterState::strike:

@@ -64,9 +64,11 @@ void Fighter::start_strike(double t_s) {
     // is changing course (just turned, stopped or started: the extrapolation would be wrong).
     const bool waiting_allowed = t_s - m_pending_since_s < m_settings.wait_for_reach_s;
     if (m_settings.aim == FighterAim::predicted && waiting_allowed && m_head_motion.ready() && !m_head_motion.settled()) return;
-    // The first try looks at every part; while the order waits, one part per frame, in turn from the head down
-    // (each look is a retrieval and the adaptation's planning: a hundred fighters waiting at once stay cheap).
-    const int first = m_pending_tried ? m_pending_part : 0, last = m_pending_tried ? first + 1 : parts;
+    // The first round looks at every part, as many per step as the planning budget lets it (all at once unless many
+    // fighters plan in the same frame); while the order waits, one part per frame, in turn from the head down (each
+    // look is a retrieval and the adaptation's planning: a hundred fighters waiting at once stay cheap).
+    const int first = m_pending_part;
+    const int last = m_pending_tried ? first + 1 : std::min(parts, first + std::max(1, m_plan_parts));
     RetrievalResult found;
     Eigen::Vector3d target = m_head;
     int part = first;
@@ -78,6 +80,10 @@ void Fighter::start_strike(double t_s) {
             reachable = true;
             break;
         }
+    }
+    if (found.found && !reachable && !m_pending_tried && last < parts) {
+        m_pending_part = last; // the first round goes on at the next step
+        return;
     }
     if (found.found && !reachable) {
         // Nothing reaches. When stepping in can help (a step is under way, or the user is beyond the band and the

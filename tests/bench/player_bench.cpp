@@ -1,8 +1,11 @@
 // Fighters per frame on one core: 1, 10, 100 and 200 fighters (or --fighters LIST) stepping at 60 Hz against a
-// wandering simulated user for --seconds of simulated time, every fighter ordered to strike every 2 s (all at
+// wandering simulated user for --seconds of simulated time, every fighter ordered to strike every second (all at
 // once: the worst frame). Reports frame time (mean, median, p99, max) per count, the frames over the 16.7 ms
 // budget, command -> first strike frame latency, and as a baseline measured in the same run the same fighters
-// never ordered (guard and steps only). Defence's cost: the same fighters, never ordered, against a user whose
+// never ordered (guard and steps only). Orders go through the planning budget (planning_budget.h, kumite play's
+// default of 14 plans a frame); the same fighters planning every strike in its order's frame are the baseline
+// (`baseline_planning_in_frame`: the slowest frame, the frames over 16.7 ms); `order_to_plan_frames` is how long a
+// fighter that wants to plan waits for the budget. Defence's cost: the same fighters, never ordered, against a user whose
 // hands punch at the middle fighter (in front of them) every 2 s, with defence on and off. Heap allocations inside the stepping are
 // counted (must be 0).
 //
@@ -10,7 +13,9 @@
 
 #include "kumite/formats/bvh_reader.h"
 #include "kumite/formats/motion_database_file.h"
+#include "kumite/runtime/bout.h"
 #include "kumite/runtime/fighter.h"
+#include "kumite/runtime/planning_budget.h"
 #include "kumite/runtime/simulated_user.h"
 #include "support/allocation_counter.h"
 
@@ -37,6 +42,7 @@ nlohmann::json summary(std::vector<double> values) {
 struct Run {
     std::vector<double> frame_us;
     std::vector<double> latency_frames;
+    std::vector<double> served_frames; // order -> the frame its first plan was allowed (the planning budget's wait)
     long allocations = 0;
     int strikes = 0;
     int user_strikes_defended = 0;
@@ -45,7 +51,7 @@ struct Run {
 enum class Opponent { wandering, punching_defended, punching_undefended };
 
 Run run(const MotionDatabaseView& db, const Retriever& retriever, CharacterRig& rig, int count, double seconds, bool orders,
-        Opponent opponent = Opponent::wandering) {
+        Opponent opponent = Opponent::wandering, int plans_per_frame = BoutOptions{}.plans_per_frame) {
     std::vector<std::unique_ptr<Fighter>> fighters;
     for (int i = 0; i < count; ++i) {
         FighterSettings settings;
@@ -55,10 +61,14 @@ Run run(const MotionDatabaseView& db, const Retriever& retriever, CharacterRig& 
     }
     SimulatedUser user(opponent == Opponent::wandering ? SimulatedKind::wander : SimulatedKind::punch, 1);
     Run result;
-    std::vector<long> ordered_at(count, -1);
+    std::vector<long> ordered_at(count, -1), waiting_since(count, -1);
+    std::vector<Fighter*> pointers;
+    for (auto& fighter : fighters) pointers.push_back(fighter.get());
+    PlanningBudget planning(plans_per_frame, fighters.size());
     const long frames = static_cast<long>(seconds * 60.0);
     result.frame_us.reserve(frames); // the bench's own vectors must not allocate inside the counted window
     result.latency_frames.reserve(std::size_t(frames) * count);
+    result.served_frames.reserve(std::size_t(frames) * count);
     for (long frame = 0; frame < frames; ++frame) {
         const double t = frame / 60.0;
         const Fighter& facing = *fighters[count / 2]; // the middle one stands in front of the user
@@ -68,9 +78,22 @@ Run run(const MotionDatabaseView& db, const Retriever& retriever, CharacterRig& 
         kumite::test::allocation_count_reset();
         kumite::test::allocation_counting(frame > 0);
         const auto started = Clock::now();
-        const bool order_now = orders && frame >= 120 && frame % 120 == 0;
+        const bool order_now = orders && frame >= 60 && frame % 60 == 0; // every second, all at once
+        // As kumite play steps a bout: the frame's orders, the planning budget, then every fighter.
+        for (int i = 0; i < count && order_now; ++i) {
+            if (fighters[i]->order(retriever.semantics_id(frame % 120 ? "punch" : "kick"), Side::none)) ordered_at[i] = frame;
+        }
+        planning.grant(pointers);
         for (int i = 0; i < count; ++i) {
-            if (order_now && fighters[i]->order(retriever.semantics_id(frame % 240 ? "punch" : "kick"), Side::none)) ordered_at[i] = frame;
+            // How long a fighter that wants to plan (its order taken or no longer waiting for a strike to end)
+            // waits for the budget to let it.
+            if (fighters[i]->wants_to_plan() && !fighters[i]->plan_is_retry()) {
+                if (waiting_since[i] < 0) waiting_since[i] = frame;
+                if (fighters[i]->may_plan()) {
+                    result.served_frames.push_back(double(frame - waiting_since[i]));
+                    waiting_since[i] = -1;
+                }
+            }
             fighters[i]->step(t, &head, &hands);
             for (const FighterEvent& event : fighters[i]->events()) {
                 if (event.type == FighterEvent::Type::state && event.state == FighterState::strike && ordered_at[i] >= 0) {
@@ -135,15 +158,27 @@ int main(int argc, char** argv) {
                              {"seconds", seconds}, {"threads", 1}};
     for (int count : counts) {
         const Run fighting = run(database->view(), retriever, rig, count, seconds, true);
+        const Run planning_in_frame = run(database->view(), retriever, rig, count, seconds, true, Opponent::wandering, 0);
         const Run guarding = run(database->view(), retriever, rig, count, seconds, false);
         const Run defending = run(database->view(), retriever, rig, count, seconds, false, Opponent::punching_defended);
         const Run undefended = run(database->view(), retriever, rig, count, seconds, false, Opponent::punching_undefended);
-        const long over_budget = std::count_if(fighting.frame_us.begin(), fighting.frame_us.end(), [](double us) { return us > 1e6 / 60.0; });
+        auto over_budget = [](const Run& r) {
+            return std::count_if(r.frame_us.begin(), r.frame_us.end(), [](double us) { return us > 1e6 / 60.0; });
+        };
         report["fighters"][std::to_string(count)] = {
             {"frame_time_us", summary(fighting.frame_us)},
-            {"frames_over_16_7_ms", over_budget},
+            {"frames_over_16_7_ms", over_budget(fighting)},
+            {"slowest_frame_us", summary(fighting.frame_us)["max"]},
             {"strikes", fighting.strikes},
             {"command_to_strike_frames", summary(fighting.latency_frames)},
+            {"order_to_plan_frames", summary(fighting.served_frames)},
+            {"plans_per_frame", BoutOptions{}.plans_per_frame},
+            {"baseline_planning_in_frame",
+             {{"frame_time_us", summary(planning_in_frame.frame_us)},
+              {"frames_over_16_7_ms", over_budget(planning_in_frame)},
+              {"slowest_frame_us", summary(planning_in_frame.frame_us)["max"]},
+              {"strikes", planning_in_frame.strikes},
+              {"command_to_strike_frames", summary(planning_in_frame.latency_frames)}}},
             {"allocations", fighting.allocations},
             {"baseline_guard_only_frame_time_us", summary(guarding.frame_us)},
             {"against_punches_frame_time_us",

@@ -157,6 +157,17 @@ public:
 
     FighterState state() const { return m_state; }
     bool has_waiting_order() const { return m_pending || m_queued; } // taken or queued, not yet ended
+    // Planning budget (planning_budget.h): whether the next step would plan a strike (an order taken, at rest or
+    // approaching, not defending, a head to aim at), whether that plan is a retry (the order waits for reach), when
+    // the order came; and whether this step may plan (default: yes). A fighter that may not keeps its guard and its
+    // order, and plans on a later step.
+    bool wants_to_plan() const;
+    bool plan_is_retry() const { return m_pending && (m_pending_tried || m_pending_part > 0); }
+    double order_since_s() const { return m_pending ? m_pending_since_s : m_queued_since_s; }
+    // `parts`: how many target parts (head, chin, chest, solar plexus) the first look at an order may try in the
+    // step (a busy frame's budget grants 1: each plan is then one retrieval and one set-up).
+    void set_may_plan(bool may_plan, int parts = 4) { m_may_plan = may_plan, m_plan_parts = parts; }
+    bool may_plan() const { return m_may_plan; }
     int character() const { return m_character; }
     const Pose& pose() const { return m_pose; }              // on the current character
     const MirFrame& mir() const { return m_mir; }            // the pose in the MIR (to record it on any skeleton)
@@ -245,6 +256,8 @@ private:
     Eigen::Vector3d m_pending_head = Eigen::Vector3d::Zero(); // the head at the order (latched aim)
     bool m_pending_tried = false; // every part was looked at once: the order waits for reach
     double m_pending_ordered_s = 0.0; // when the supervisor gave it (earlier than m_pending_since_s if it waited)
+    bool m_may_plan = true;       // the planning budget lets this step plan a strike
+    int m_plan_parts = 4;         // ... looking at this many target parts at most
     bool m_queued = false;        // an order waiting while the fighter is busy
     StrikeOrder m_queued_order;
     double m_queued_since_s = 0.0;
