@@ -194,6 +194,7 @@ private:
     void push_event(const FighterEvent& event);
     void emit_ignored(double t_s, const char* why); // the pending order, ignored
     void emit_order_event(FighterEvent::Type type, const StrikeOrder& order, double since_s, const char* why = "");
+    static FighterEvent order_event(FighterEvent::Type type, double t_s, const StrikeOrder& order); // with what it asked for
     bool busy() const; // striking, recovering, defending or with an order under way: new orders wait
     void take_order(const StrikeOrder& order); // becomes the pending order, from now
     void serve_queue(double t_s);              // the waiting order: taken when the fighter can, or expired
