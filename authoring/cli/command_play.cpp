@@ -4,6 +4,9 @@
 
 #include "capture_loading.h"
 #include "partial_file.h"
+#include "play_output.h"
+#include "session_html.h"
+#include "session_log.h"
 #include "character_catalog.h"
 #include "default_database.h"
 #include "commands.h"
@@ -66,6 +69,7 @@ const CommandSpec& play_spec() {
          {"record", "OUT.bvh|OUT.glb", "the first fighter's motion on the starting character (glTF: with its body)"},
          {"record-user", "OUT.csv", "the user as the tracker gave it, every frame: t,x,y,z[,lx,ly,lz,rx,ry,rz] (replay it with --tracker replay:OUT.csv)"},
          {"events", "OUT.jsonl", "one JSON object per event"},
+         {"html", "OUT.html", "the session report: one page with the summary, a timeline, the room from above and distributions (also kumite report)"},
          {"report", "OUT.json", "frames, frame times, orders, strikes, hits, misses, impacts, overshoot, joint-limit violations, tracker counts"},
          characters_dir_flag(), json_flag()}};
     return spec;
@@ -73,207 +77,13 @@ const CommandSpec& play_spec() {
 
 namespace {
 
-nlohmann::json summary_of(const ValueHistogram& values) {
-    return {{"mean", values.mean()}, {"p99", values.quantile(0.99)}, {"max", values.max()}};
-}
-
-// Median, p95 and max (the strike figures of issue 13's reports).
-nlohmann::json quantiles_of(const ValueHistogram& values) {
-    return {{"median", values.quantile(0.5)}, {"p95", values.quantile(0.95)}, {"max", values.max()}, {"count", values.count()}};
-}
-
-const char* side_text(Side side) { return side == Side::left ? "left" : side == Side::right ? "right" : "any"; }
-// An order's kind or height: "any" when it named none.
-const char* label_text(const char* name) { return std::string_view(name) == "none" ? "any" : name; }
-
 bool display_present() {
     const char* x11 = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     return (x11 && *x11) || (wayland && *wayland);
 }
 
-// What the user is when it is a recorded person (else none): which capture, placed where, and how far it got.
-std::optional<nlohmann::json> tracker_source_json(const Bout& bout) {
-    const CaptureUser* capture = bout.tracker().capture();
-    if (!capture) return std::nullopt;
-    const Eigen::Vector3d head = capture->mean_head();
-    return nlohmann::json{{"source", "capture"},
-                          {"capture", capture->path()},
-                          {"distance_m", capture->placement().distance_m},
-                          {"start_s", capture->placement().start_s},
-                          {"duration_s", capture->duration_s()},
-                          {"frame_rate_hz", 1.0 / capture->frame_time_s()},
-                          {"performer_height_m", capture->performer_height_m()},
-                          {"mean_head", {head.x(), head.y(), head.z()}},
-                          {"at_end", "loops"},
-                          {"loops", capture->loops()}};
-}
-
-// One line of the user's recording: t, head, hands (nan when a hand is not tracked); nothing while the tracker has
-// no head (a gap, as a replay reads it).
-void write_user_line(std::ostream& out, const Bout& bout) {
-    if (!bout.head()) return;
-    const Eigen::Vector3d& head = *bout.head();
-    out << bout.now_s() << "," << head.x() << "," << head.y() << "," << head.z();
-    const UserHands& hands = bout.hands();
-    for (int side = 0; side < 2; ++side) {
-        if (hands.present[side]) out << "," << hands.world[side].x() << "," << hands.world[side].y() << "," << hands.world[side].z();
-        else out << ",nan,nan,nan";
-    }
-    out << "\n";
-}
-
 } // namespace
-
-nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
-    const FighterEvent& event = bout_event.event;
-    nlohmann::json line = {{"t", event.t_s}, {"type", fighter_event_name(event.type)}, {"fighter", bout_event.fighter}};
-    const Retriever& retriever = bout.retriever();
-    if (const CaptureUser* capture = bout.tracker().capture()) line["capture_s"] = capture->capture_time_s();
-    switch (event.type) {
-    case FighterEvent::Type::order:
-    case FighterEvent::Type::order_queued:
-    case FighterEvent::Type::order_performed:
-    case FighterEvent::Type::order_expired:
-        line["command"] = retriever.semantics_name(event.semantics);
-        line["side"] = side_text(event.side);
-        line["kind"] = label_text(strike_kind_name(event.kind));
-        line["height"] = label_text(strike_height_name(event.height));
-        if (event.type == FighterEvent::Type::order_performed || event.type == FighterEvent::Type::order_expired) line["waited_s"] = event.waited_s;
-        if (event.type == FighterEvent::Type::order_expired) line["why"] = event.why;
-        break;
-    case FighterEvent::Type::ignored_order:
-        line["why"] = event.why;
-        if (event.semantics >= 0) line["command"] = retriever.semantics_name(event.semantics);
-        line["side"] = side_text(event.side);
-        line["kind"] = label_text(strike_kind_name(event.kind));
-        line["height"] = label_text(strike_height_name(event.height));
-        break;
-    case FighterEvent::Type::state: line["state"] = fighter_state_name(event.state); break;
-    case FighterEvent::Type::strike:
-        line["result"] = event.hit ? "hit" : "miss";
-        line["contact_error_m"] = event.contact_error_m;
-        line["head_distance_m"] = event.head_distance_m;
-        line["range_m"] = event.range_m;
-        line["clip"] = bout.database().string(bout.database().clips[event.clip].name);
-        line["kind"] = strike_kind_name(bout.database().clips[event.clip].strike_kind());
-        line["height"] = strike_height_name(bout.database().clips[event.clip].strike_height());
-        line["clip_side"] = side_text(static_cast<Side>(bout.database().clips[event.clip].side));
-        line["ordered"] = {{"side", side_text(event.side)}, {"kind", label_text(strike_kind_name(event.kind))},
-                           {"height", label_text(strike_height_name(event.height))}};
-        line["varied"] = event.varied;
-        line["effector_speed_at_contact_mps"] = event.effector_speed_mps;
-        line["outcome"] = event.impact ? "impact" : "follow_through";
-        line["aim"] = fighter_aim_name(event.aim);
-        line["target"] = {event.target.x(), event.target.y(), event.target.z()};
-        line["head_speed_mps"] = event.head_speed_mps;
-        line["prediction_error_m"] = event.prediction_error_m;
-        line["retrieval_offset_m"] = event.retrieval_offset_m;
-        line["steered_m"] = event.steered_m;
-        line["target_part"] = target_part_name(event.target_part);
-        line["reachable"] = event.reachable;
-        break;
-    case FighterEvent::Type::strike_end:
-        line["clip"] = bout.database().string(bout.database().clips[event.clip].name);
-        line["outcome"] = event.impact ? "impact" : "follow_through";
-        line["overshoot_m"] = event.overshoot_m;
-        line["joint_limit_violations"] = event.joint_limit_violations;
-        break;
-    case FighterEvent::Type::character: line["character"] = bout.character_name(event.character); break;
-    case FighterEvent::Type::user_strike:
-        line["hand"] = event.user_strike.hand == 0 ? "left" : "right";
-        line["aimed_at"] = event.user_strike.at_head ? "head" : "chest";
-        line["move"] = defence_move_name(event.user_strike.move);
-        line["arm"] = event.user_strike.arm == 0 ? "left" : "right";
-        line["time_to_impact_s"] = event.user_strike.time_to_impact_s;
-        line["detected"] = event.user_strike.detected;
-        line["hand_speed_mps"] = event.user_strike.hand_speed_mps;
-        break;
-    case FighterEvent::Type::user_strike_end:
-        line["hand"] = event.user_strike.hand == 0 ? "left" : "right";
-        line["aimed_at"] = event.user_strike.at_head ? "head" : "chest";
-        line["move"] = defence_move_name(event.user_strike.move);
-        line["outcome"] = user_strike_outcome_name(event.user_strike.outcome);
-        if (event.user_strike.forearm_to_path_m >= 0.0) line["forearm_to_path_m"] = event.user_strike.forearm_to_path_m;
-        line["detected"] = event.user_strike.detected;
-        if (event.user_strike.blocking_arm >= 0) line["blocking_arm"] = event.user_strike.blocking_arm == 0 ? "left" : "right";
-        line["joint_limit_violations"] = event.joint_limit_violations;
-        line["foot_shift_m"] = event.foot_shift_m;
-        break;
-    default: break;
-    }
-    return line;
-}
-
-// Orders still under way or queued when the bout ended (every other order ended performed, refused or expired).
-static long long waiting_orders(const Bout& bout) {
-    long long waiting = 0;
-    for (int f = 0; f < bout.fighter_count(); ++f) waiting += bout.fighter(f).has_waiting_order();
-    return waiting;
-}
-
-nlohmann::json play_report_json(const Bout& bout) {
-    const BoutCounters& counters = bout.counters();
-    nlohmann::json by_target;
-    for (int target = 0; target < 2; ++target) {
-        for (UserStrikeOutcome outcome : {UserStrikeOutcome::blocked, UserStrikeOutcome::slipped, UserStrikeOutcome::hit_by_user, UserStrikeOutcome::missed}) {
-            by_target[target == 0 ? "head" : "chest"][user_strike_outcome_name(outcome)] =
-                counters.user_outcomes_by_target[target][static_cast<int>(outcome)];
-        }
-    }
-    // Strikes and hits by what the clips are (semantics, kind, height, side), and how many clips were used.
-    nlohmann::json by_kind = nlohmann::json::object();
-    int clips_used = 0;
-    const MotionDatabaseView& db = bout.database();
-    for (std::size_t c = 0; c < counters.by_clip.size(); ++c) {
-        const auto [strikes, hits] = counters.by_clip[c];
-        if (strikes == 0) continue;
-        ++clips_used;
-        const DbClip& clip = db.clips[c];
-        const std::string key = std::string(db.string(clip.semantics)) + " " + strike_kind_name(clip.strike_kind()) + " " +
-                                strike_height_name(clip.strike_height()) + " " + side_text(static_cast<Side>(clip.side));
-        nlohmann::json& entry = by_kind[key];
-        if (entry.is_null()) entry = {{"strikes", 0LL}, {"hits", 0LL}};
-        entry["strikes"] = entry.value("strikes", 0LL) + strikes;
-        entry["hits"] = entry.value("hits", 0LL) + hits;
-    }
-    const double mean_latency = counters.command_to_strike_frames.mean(), max_latency = counters.command_to_strike_frames.max();
-    return {{"frames", counters.frames},
-            {"fighters", bout.fighter_count()},
-            {"frame_time_us", summary_of(counters.frame_us)},
-            {"missed_frames", counters.missed_frames},
-            {"orders", counters.orders},
-            {"strikes", counters.strikes},
-            {"hits", counters.hits},
-            {"misses", counters.misses},
-            {"ignored_orders", counters.ignored_orders},
-            {"order_outcomes",
-             {{"performed", counters.orders_performed}, {"queued", counters.orders_queued}, {"expired", counters.orders_expired},
-              {"refused", counters.ignored_orders}, {"waiting_at_end", waiting_orders(bout)}}},
-            {"tracker_packets", bout.tracker().packets()},
-            {"tracker_rejected", bout.tracker().rejected()},
-            {"command_to_strike_frames", {{"max", max_latency}, {"mean", mean_latency}}},
-            {"impacts", counters.impacts},
-            {"follow_throughs", counters.follow_throughs},
-            {"overshoot_m", quantiles_of(counters.impact_overshoot_m)},
-            {"effector_speed_at_contact_mps", quantiles_of(counters.contact_speed_mps)},
-            {"joint_limit_violations", counters.joint_limit_violations},
-            {"aim", fighter_aim_name(bout.fighter(0).aim())},
-            {"by_kind", by_kind},
-            {"clips_used", clips_used},
-            {"by_aim",
-             {{"latched", {{"strikes", counters.latched_strikes}, {"hits", counters.latched_hits}}},
-              {"predicted", {{"strikes", counters.predicted_strikes}, {"hits", counters.predicted_hits}}}}},
-            {"prediction_error_m", quantiles_of(counters.prediction_error_m)},
-            {"defence", bout.fighter(0).defence_enabled()},
-            {"user_strikes",
-             {{"seen", counters.user_strikes}, {"blocks", counters.blocks}, {"slips", counters.slips}, {"blocked", counters.blocked},
-              {"slipped", counters.slipped}, {"hit_by_user", counters.hit_by_user}, {"missed", counters.user_missed},
-              {"forearm_to_path_m", quantiles_of(counters.forearm_to_path_m)},
-              {"joint_limit_violations", counters.defence_joint_limit_violations},
-              {"foot_shift_m", counters.defence_foot_shift_m},
-              {"by_target", by_target}}}};
-}
 
 int run_play(int argc, char** argv) {
     Arguments arguments;
@@ -399,14 +209,32 @@ int run_play(int argc, char** argv) {
     bout.set_message_handler([](std::string_view message) { std::cerr << "kumite play: " << message; });
 
     PartialFile events_out, user_out;
+    const std::optional<std::string> html_path = arguments.value("html");
+    if (html_path) {
+        const std::filesystem::path folder_of_html = std::filesystem::absolute(*html_path).parent_path();
+        if (!std::filesystem::is_directory(folder_of_html)) return input_error(*html_path + ": no folder " + folder_of_html.string() + " to write the session report in");
+    }
+    // The event lines go to the events file and, for --html, into the session log as they come.
+    report::SessionLog session;
+    auto write_event = [&](nlohmann::json line) {
+        // Against a recorded person every line of the bout says where in the capture it was.
+        const CaptureUser* capture = bout.tracker().capture();
+        if (capture && bout.counters().frames > 0 && !line.contains("capture_s")) line["capture_s"] = capture->capture_time_s();
+        if (events_out.is_open()) events_out.stream() << line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+        if (html_path) session.add(line);
+    };
     if (const std::optional<std::string> path = arguments.value("events")) {
         if (Result<void> opened = events_out.open(*path, "the events file"); !opened) return input_error(opened.error().message);
-        if (const std::optional<nlohmann::json> source = tracker_source_json(bout)) {
-            nlohmann::json line = {{"t", 0.0}, {"type", "tracker_source"}};
-            line.update(*source);
-            events_out.stream() << line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
-        }
     }
+    const PlaySetup setup{arguments.value("tracker").value_or("simulate:still"), database_path->string(), *seed};
+    write_event(bout_start_json(bout, setup));
+    if (const std::optional<nlohmann::json> source = tracker_source_json(bout)) {
+        nlohmann::json line = {{"t", 0.0}, {"type", "tracker_source"}};
+        line.update(*source);
+        write_event(line);
+    }
+    RoomSampler sampler;
+    std::vector<nlohmann::json> samples;
     if (const std::optional<std::string> path = arguments.value("record-user")) {
         if (Result<void> opened = user_out.open(*path, "the user's recording"); !opened) return input_error(opened.error().message);
         user_out.stream() << "# t,x,y,z,lx,ly,lz,rx,ry,rz: the user's head and hands (nan: not tracked), world metres\n" << std::fixed;
@@ -414,10 +242,11 @@ int run_play(int argc, char** argv) {
     }
     auto after_step = [&] {
         if (user_out.is_open()) write_user_line(user_out.stream(), bout);
-        if (!events_out.is_open()) return;
-        for (const BoutEvent& event : bout.events()) {
-            events_out.stream() << play_event_json(bout, event).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
-        }
+        if (!events_out.is_open() && !html_path) return;
+        for (const BoutEvent& event : bout.events()) write_event(play_event_json(bout, event));
+        samples.clear();
+        sampler.sample(bout, samples);
+        for (const nlohmann::json& line : samples) write_event(line);
     };
 
     const bool realtime = arguments.has("realtime") || bout.live() || viewer;
@@ -440,6 +269,7 @@ int run_play(int argc, char** argv) {
         }
     }
 
+    write_event(bout_end_json(bout));
     for (PartialFile* file : {&events_out, &user_out}) {
         if (Result<void> finished = file->finish(); !finished) return input_error(finished.error().message);
     }
@@ -457,6 +287,11 @@ int run_play(int argc, char** argv) {
     if (viewer) report["viewer_drawing"] = {{"renderer", viewer_outcome.renderer}, {"body_meshes_uploaded", viewer_outcome.body_mesh_uploads}};
     if (const std::optional<std::string> path = arguments.value("report")) {
         if (Result<void> written = write_file_atomically(*path, report.dump(2) + "\n"); !written) return input_error(written.error().message);
+    }
+    if (html_path) {
+        if (Result<void> written = write_file_atomically(*html_path, report::session_html(session, &report, arguments.value("events").value_or("kumite play"))); !written) {
+            return input_error(written.error().message);
+        }
     }
     if (arguments.has("json")) {
         print_json(report);

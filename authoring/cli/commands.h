@@ -44,4 +44,7 @@ int run_adapt(int argc, char** argv);
 const CommandSpec& play_spec();
 int run_play(int argc, char** argv);
 
+const CommandSpec& report_spec();
+int run_report(int argc, char** argv);
+
 } // namespace kumite::cli

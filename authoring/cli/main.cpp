@@ -10,7 +10,7 @@ namespace {
 
 using kumite::cli::Command;
 
-constexpr std::array<Command, 11> k_commands = {{
+constexpr std::array<Command, 12> k_commands = {{
     {kumite::cli::inspect_spec, kumite::cli::run_inspect},
     {kumite::cli::positions_spec, kumite::cli::run_positions},
     {kumite::cli::convert_spec, kumite::cli::run_convert},
@@ -22,6 +22,7 @@ constexpr std::array<Command, 11> k_commands = {{
     {kumite::cli::query_spec, kumite::cli::run_query},
     {kumite::cli::adapt_spec, kumite::cli::run_adapt},
     {kumite::cli::play_spec, kumite::cli::run_play},
+    {kumite::cli::report_spec, kumite::cli::run_report},
 }};
 
 void print_overview(std::ostream& out) {

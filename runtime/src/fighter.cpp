@@ -346,6 +346,7 @@ void Fighter::play_strike(double t_s) {
         event.head_distance_m = m_tracking ? (frame.effector - aimed_point_now()).norm() : 1e9;
         event.hit = event.head_distance_m <= m_settings.hit_radius_m;
         event.prediction_error_m = m_tracking ? (aimed_point_now() - m_plan.target_world).norm() : 1e9;
+        if (m_tracking) event.aimed_point_at_contact = aimed_point_now();
         event.range_m = m_strike_range_m;
         if (m_previous_effector_s >= 0.0 && t_s > m_previous_effector_s) {
             event.effector_speed_mps = (frame.effector - m_previous_effector).norm() / (t_s - m_previous_effector_s);

@@ -37,6 +37,8 @@ TEST_CASE("cli: play against a recorded boxer says which capture, where, and whe
     std::istringstream lines(kumite::test::read_text(events));
     std::string line;
     REQUIRE(std::getline(lines, line));
+    CHECK(nlohmann::json::parse(line)["type"] == "bout_start");
+    REQUIRE(std::getline(lines, line));
     const nlohmann::json first = nlohmann::json::parse(line);
     CHECK(first["type"] == "tracker_source");
     CHECK(first["capture"] == boxer.string());

@@ -116,6 +116,8 @@ struct FighterEvent {
     Eigen::Vector3d target = Eigen::Vector3d::Zero(); // strike events: the target aimed at, world
     double head_speed_mps = 0.0;             // strike events: the head's filtered speed when the strike began
     double prediction_error_m = 0.0;         // strike events: the head at the contact to the target aimed at
+    std::optional<Eigen::Vector3d> aimed_point_at_contact; // strike events: where the part aimed at was at the contact
+                                                           // (world; none without a head then)
     double retrieval_offset_m = 0.0;         // strike events: the chosen clip's natural hit point to the target
     double steered_m = 0.0;                  // strike events: how far steering moved the target since the start
     TargetPart target_part = TargetPart::head; // strike events: the part aimed at

@@ -1,0 +1,261 @@
+// What `kumite play` writes about a bout: its events as JSON lines (with the lines that frame the bout and sample
+// the room for the session report), its report, and the user's recording.
+
+#include "play_output.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace kumite::cli {
+
+namespace {
+
+nlohmann::json summary_of(const ValueHistogram& values) {
+    return {{"mean", values.mean()}, {"p99", values.quantile(0.99)}, {"max", values.max()}};
+}
+
+// Median, p95 and max (the strike figures of issue 13's reports).
+nlohmann::json quantiles_of(const ValueHistogram& values) {
+    return {{"median", values.quantile(0.5)}, {"p95", values.quantile(0.95)}, {"max", values.max()}, {"count", values.count()}};
+}
+
+const char* side_text(Side side) { return side == Side::left ? "left" : side == Side::right ? "right" : "any"; }
+// An order's kind or height: "any" when it named none.
+const char* label_text(const char* name) { return std::string_view(name) == "none" ? "any" : name; }
+
+nlohmann::json xyz(const Eigen::Vector3d& point) { return {point.x(), point.y(), point.z()}; }
+
+} // namespace
+
+std::optional<nlohmann::json> tracker_source_json(const Bout& bout) {
+    const CaptureUser* capture = bout.tracker().capture();
+    if (!capture) return std::nullopt;
+    const Eigen::Vector3d head = capture->mean_head();
+    return nlohmann::json{{"source", "capture"},
+                          {"capture", capture->path()},
+                          {"distance_m", capture->placement().distance_m},
+                          {"start_s", capture->placement().start_s},
+                          {"duration_s", capture->duration_s()},
+                          {"frame_rate_hz", 1.0 / capture->frame_time_s()},
+                          {"performer_height_m", capture->performer_height_m()},
+                          {"mean_head", {head.x(), head.y(), head.z()}},
+                          {"at_end", "loops"},
+                          {"loops", capture->loops()}};
+}
+
+void write_user_line(std::ostream& out, const Bout& bout) {
+    if (!bout.head()) return;
+    const Eigen::Vector3d& head = *bout.head();
+    out << bout.now_s() << "," << head.x() << "," << head.y() << "," << head.z();
+    const UserHands& hands = bout.hands();
+    for (int side = 0; side < 2; ++side) {
+        if (hands.present[side]) out << "," << hands.world[side].x() << "," << hands.world[side].y() << "," << hands.world[side].z();
+        else out << ",nan,nan,nan";
+    }
+    out << "\n";
+}
+
+nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
+    const FighterEvent& event = bout_event.event;
+    nlohmann::json line = {{"t", event.t_s}, {"type", fighter_event_name(event.type)}, {"fighter", bout_event.fighter}};
+    const Retriever& retriever = bout.retriever();
+    if (const CaptureUser* capture = bout.tracker().capture()) line["capture_s"] = capture->capture_time_s();
+    switch (event.type) {
+    case FighterEvent::Type::order:
+    case FighterEvent::Type::order_queued:
+    case FighterEvent::Type::order_performed:
+    case FighterEvent::Type::order_expired:
+        line["command"] = retriever.semantics_name(event.semantics);
+        line["side"] = side_text(event.side);
+        line["kind"] = label_text(strike_kind_name(event.kind));
+        line["height"] = label_text(strike_height_name(event.height));
+        if (event.type == FighterEvent::Type::order_performed || event.type == FighterEvent::Type::order_expired) line["waited_s"] = event.waited_s;
+        if (event.type == FighterEvent::Type::order_expired) line["why"] = event.why;
+        break;
+    case FighterEvent::Type::ignored_order:
+        line["why"] = event.why;
+        if (event.semantics >= 0) line["command"] = retriever.semantics_name(event.semantics);
+        line["side"] = side_text(event.side);
+        line["kind"] = label_text(strike_kind_name(event.kind));
+        line["height"] = label_text(strike_height_name(event.height));
+        break;
+    case FighterEvent::Type::state: line["state"] = fighter_state_name(event.state); break;
+    case FighterEvent::Type::strike:
+        line["result"] = event.hit ? "hit" : "miss";
+        line["contact_error_m"] = event.contact_error_m;
+        line["head_distance_m"] = event.head_distance_m;
+        line["range_m"] = event.range_m;
+        line["clip"] = bout.database().string(bout.database().clips[event.clip].name);
+        line["command"] = bout.database().string(bout.database().clips[event.clip].semantics);
+        line["kind"] = strike_kind_name(bout.database().clips[event.clip].strike_kind());
+        line["height"] = strike_height_name(bout.database().clips[event.clip].strike_height());
+        line["clip_side"] = side_text(static_cast<Side>(bout.database().clips[event.clip].side));
+        line["ordered"] = {{"side", side_text(event.side)}, {"kind", label_text(strike_kind_name(event.kind))},
+                           {"height", label_text(strike_height_name(event.height))}};
+        line["varied"] = event.varied;
+        line["effector_speed_at_contact_mps"] = event.effector_speed_mps;
+        line["outcome"] = event.impact ? "impact" : "follow_through";
+        line["aim"] = fighter_aim_name(event.aim);
+        line["target"] = xyz(event.target);
+        line["head_speed_mps"] = event.head_speed_mps;
+        line["prediction_error_m"] = event.prediction_error_m;
+        if (event.aimed_point_at_contact) line["aimed_point_at_contact"] = xyz(*event.aimed_point_at_contact);
+        line["retrieval_offset_m"] = event.retrieval_offset_m;
+        line["steered_m"] = event.steered_m;
+        line["target_part"] = target_part_name(event.target_part);
+        line["reachable"] = event.reachable;
+        break;
+    case FighterEvent::Type::strike_end:
+        line["clip"] = bout.database().string(bout.database().clips[event.clip].name);
+        line["outcome"] = event.impact ? "impact" : "follow_through";
+        line["overshoot_m"] = event.overshoot_m;
+        line["joint_limit_violations"] = event.joint_limit_violations;
+        break;
+    case FighterEvent::Type::character: line["character"] = bout.character_name(event.character); break;
+    case FighterEvent::Type::user_strike:
+        line["hand"] = event.user_strike.hand == 0 ? "left" : "right";
+        line["aimed_at"] = event.user_strike.at_head ? "head" : "chest";
+        line["move"] = defence_move_name(event.user_strike.move);
+        line["arm"] = event.user_strike.arm == 0 ? "left" : "right";
+        line["time_to_impact_s"] = event.user_strike.time_to_impact_s;
+        line["detected"] = event.user_strike.detected;
+        line["hand_speed_mps"] = event.user_strike.hand_speed_mps;
+        break;
+    case FighterEvent::Type::user_strike_end:
+        line["hand"] = event.user_strike.hand == 0 ? "left" : "right";
+        line["aimed_at"] = event.user_strike.at_head ? "head" : "chest";
+        line["move"] = defence_move_name(event.user_strike.move);
+        line["outcome"] = user_strike_outcome_name(event.user_strike.outcome);
+        if (event.user_strike.forearm_to_path_m >= 0.0) line["forearm_to_path_m"] = event.user_strike.forearm_to_path_m;
+        line["detected"] = event.user_strike.detected;
+        if (event.user_strike.blocking_arm >= 0) line["blocking_arm"] = event.user_strike.blocking_arm == 0 ? "left" : "right";
+        line["joint_limit_violations"] = event.joint_limit_violations;
+        line["foot_shift_m"] = event.foot_shift_m;
+        break;
+    default: break;
+    }
+    return line;
+}
+
+// Orders still under way or queued when the bout ended (every other order ended performed, refused or expired).
+static long long waiting_orders(const Bout& bout) {
+    long long waiting = 0;
+    for (int f = 0; f < bout.fighter_count(); ++f) waiting += bout.fighter(f).has_waiting_order();
+    return waiting;
+}
+
+nlohmann::json play_report_json(const Bout& bout) {
+    const BoutCounters& counters = bout.counters();
+    nlohmann::json by_target;
+    for (int target = 0; target < 2; ++target) {
+        for (UserStrikeOutcome outcome : {UserStrikeOutcome::blocked, UserStrikeOutcome::slipped, UserStrikeOutcome::hit_by_user, UserStrikeOutcome::missed}) {
+            by_target[target == 0 ? "head" : "chest"][user_strike_outcome_name(outcome)] =
+                counters.user_outcomes_by_target[target][static_cast<int>(outcome)];
+        }
+    }
+    // Strikes and hits by what the clips are (semantics, kind, height, side), and how many clips were used.
+    nlohmann::json by_kind = nlohmann::json::object();
+    int clips_used = 0;
+    const MotionDatabaseView& db = bout.database();
+    for (std::size_t c = 0; c < counters.by_clip.size(); ++c) {
+        const auto [strikes, hits] = counters.by_clip[c];
+        if (strikes == 0) continue;
+        ++clips_used;
+        const DbClip& clip = db.clips[c];
+        const std::string key = std::string(db.string(clip.semantics)) + " " + strike_kind_name(clip.strike_kind()) + " " +
+                                strike_height_name(clip.strike_height()) + " " + side_text(static_cast<Side>(clip.side));
+        nlohmann::json& entry = by_kind[key];
+        if (entry.is_null()) entry = {{"strikes", 0LL}, {"hits", 0LL}};
+        entry["strikes"] = entry.value("strikes", 0LL) + strikes;
+        entry["hits"] = entry.value("hits", 0LL) + hits;
+    }
+    const double mean_latency = counters.command_to_strike_frames.mean(), max_latency = counters.command_to_strike_frames.max();
+    return {{"frames", counters.frames},
+            {"fighters", bout.fighter_count()},
+            {"frame_time_us", summary_of(counters.frame_us)},
+            {"missed_frames", counters.missed_frames},
+            {"orders", counters.orders},
+            {"strikes", counters.strikes},
+            {"hits", counters.hits},
+            {"misses", counters.misses},
+            {"ignored_orders", counters.ignored_orders},
+            {"order_outcomes",
+             {{"performed", counters.orders_performed}, {"queued", counters.orders_queued}, {"expired", counters.orders_expired},
+              {"refused", counters.ignored_orders}, {"waiting_at_end", waiting_orders(bout)}}},
+            {"tracker_packets", bout.tracker().packets()},
+            {"tracker_rejected", bout.tracker().rejected()},
+            {"command_to_strike_frames", {{"max", max_latency}, {"mean", mean_latency}}},
+            {"impacts", counters.impacts},
+            {"follow_throughs", counters.follow_throughs},
+            {"overshoot_m", quantiles_of(counters.impact_overshoot_m)},
+            {"effector_speed_at_contact_mps", quantiles_of(counters.contact_speed_mps)},
+            {"joint_limit_violations", counters.joint_limit_violations},
+            {"aim", fighter_aim_name(bout.fighter(0).aim())},
+            {"by_kind", by_kind},
+            {"clips_used", clips_used},
+            {"by_aim",
+             {{"latched", {{"strikes", counters.latched_strikes}, {"hits", counters.latched_hits}}},
+              {"predicted", {{"strikes", counters.predicted_strikes}, {"hits", counters.predicted_hits}}}}},
+            {"prediction_error_m", quantiles_of(counters.prediction_error_m)},
+            {"defence", bout.fighter(0).defence_enabled()},
+            {"user_strikes",
+             {{"seen", counters.user_strikes}, {"blocks", counters.blocks}, {"slips", counters.slips}, {"blocked", counters.blocked},
+              {"slipped", counters.slipped}, {"hit_by_user", counters.hit_by_user}, {"missed", counters.user_missed},
+              {"forearm_to_path_m", quantiles_of(counters.forearm_to_path_m)},
+              {"joint_limit_violations", counters.defence_joint_limit_violations},
+              {"foot_shift_m", counters.defence_foot_shift_m},
+              {"by_target", by_target}}}};
+}
+
+
+nlohmann::json bout_start_json(const Bout& bout, const PlaySetup& setup) {
+    nlohmann::json characters = nlohmann::json::array();
+    for (int c = 0; c < bout.character_count(); ++c) characters.push_back(bout.character_name(c));
+    nlohmann::json line = {{"t", 0.0},
+                           {"type", "bout_start"},
+                           {"fighters", bout.fighter_count()},
+                           {"characters", characters},
+                           {"character", bout.character_name(bout.fighter(0).character())},
+                           {"aim", fighter_aim_name(bout.fighter(0).aim())},
+                           {"defence", bout.fighter(0).defence_enabled()},
+                           {"rate_hz", bout.rate_hz()},
+                           {"tracker", setup.tracker},
+                           {"database", setup.database},
+                           {"seed", setup.seed},
+                           {"sample_period_s", k_track_period_s}};
+    return line;
+}
+
+// Nothing measured on the wall clock: the events of a seeded headless bout are the same every run (frame times are
+// in the report).
+nlohmann::json bout_end_json(const Bout& bout) {
+    const BoutCounters& counters = bout.counters();
+    return {{"t", bout.now_s()},
+            {"type", "bout_end"},
+            {"frames", counters.frames},
+            {"duration_s", double(counters.frames) / bout.rate_hz()},
+            {"orders_waiting_at_end", waiting_orders(bout)},
+            {"tracker_packets", bout.tracker().packets()},
+            {"tracker_rejected", bout.tracker().rejected()}};
+}
+
+void RoomSampler::sample(const Bout& bout, std::vector<nlohmann::json>& lines) {
+    const double t = bout.now_s();
+    if (t + 1e-9 >= m_next_track_s) {
+        m_next_track_s = t + k_track_period_s;
+        if (bout.head()) lines.push_back({{"t", t}, {"type", "track"}, {"head", xyz(*bout.head())}});
+    }
+    m_last_position.resize(std::size_t(bout.fighter_count()), Eigen::Vector3d::Constant(std::nan("")));
+    for (int f = 0; f < bout.fighter_count(); ++f) {
+        // Where the fighter stands (its heading frame on the floor, set between clips), not the pelvis swaying in a
+        // strike: the top view shows the steps.
+        const HeadingFrame heading = bout.fighter(f).heading();
+        Eigen::Vector3d& last = m_last_position[std::size_t(f)];
+        if (!last.allFinite() || (heading.origin - last).norm() > k_position_step_m) {
+            last = heading.origin;
+            lines.push_back({{"t", t}, {"type", "fighter_position"}, {"fighter", f}, {"position", xyz(heading.origin)}, {"yaw_rad", heading.yaw_rad}});
+        }
+    }
+}
+
+} // namespace kumite::cli

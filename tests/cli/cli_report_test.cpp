@@ -1,0 +1,104 @@
+// `kumite report EVENTS.jsonl -o OUT.html` and `kumite play --html`: the page's counts equal the events a real
+// bout wrote (against a recorded boxer), a cut-off events file still gives a page and a warning saying where.
+
+#include "support/test_paths.h"
+#include "support/html_counts.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+
+using kumite::test::read_text;
+using kumite::test::occurrences;
+using kumite::test::run_command;
+using kumite::test::summary_count;
+
+TEST_CASE("cli: report and play --html draw the bout's events, counts equal to the events", "[cli][corpus]") {
+    const std::filesystem::path boxer = kumite::test::mocap_root() / "cmu14-boxing" / "box-1.bvh";
+    if (!std::filesystem::exists(boxer)) return;
+    const std::string kumite = (kumite::test::bin_dir() / "kumite").string();
+    const std::string db = (kumite::test::source_dir() / "data/golden/golden-v2.kdb").string();
+    const std::filesystem::path folder = kumite::test::make_temp_dir("cli-report");
+    {
+        std::ofstream script(folder / "orders.txt");
+        for (int i = 0; i < 14; ++i) script << 1.0 + 1.5 * i << (i % 2 ? " kick\n" : " punch\n");
+        script << "9.5 character giant\n";
+    }
+    const auto played = run_command(kumite + " play " + db + " --headless --duration 24 --aim predicted --tracker capture:" + boxer.string() +
+                                    " --commands script:" + (folder / "orders.txt").string() + " --events " + (folder / "bout.jsonl").string() +
+                                    " --report " + (folder / "bout.json").string() + " --html " + (folder / "play.html").string());
+    INFO(played.err);
+    REQUIRE(played.status == 0);
+    const auto drawn = run_command(kumite + " report " + (folder / "bout.jsonl").string() + " --report " + (folder / "bout.json").string() + " -o " +
+                                   (folder / "report.html").string() + " --json");
+    INFO(drawn.err);
+    REQUIRE(drawn.status == 0);
+    CHECK(nlohmann::json::parse(drawn.out)["complete"] == true);
+
+    // What the events say.
+    std::map<std::string, long long> types, outcomes;
+    long long hits = 0, targets = 0;
+    std::istringstream lines(read_text(folder / "bout.jsonl"));
+    for (std::string line; std::getline(lines, line);) {
+        const nlohmann::json event = nlohmann::json::parse(line);
+        ++types[event["type"].get<std::string>()];
+        if (event["type"] == "strike") hits += event["result"] == "hit", targets += event.contains("target");
+        if (event["type"] == "user_strike_end") ++outcomes[event["outcome"].get<std::string>()];
+    }
+    const nlohmann::json report = nlohmann::json::parse(read_text(folder / "bout.json"));
+    REQUIRE(types["strike"] >= 5);
+    CHECK(types["bout_start"] == 1);
+    CHECK(types["bout_end"] == 1);
+    CHECK(types["track"] >= 200); // 10 a second
+    CHECK(types["strike"] == report["strikes"].get<long long>());
+
+    for (const char* page : {"play.html", "report.html"}) {
+        INFO(page);
+        const std::string html = read_text(folder / page);
+        CHECK(summary_count(html, "n-strikes") == types["strike"]);
+        CHECK(summary_count(html, "n-hits") == hits);
+        CHECK(summary_count(html, "n-orders") == report["orders"].get<long long>());
+        CHECK(summary_count(html, "n-performed") == types["order_performed"]);
+        CHECK(summary_count(html, "n-refused") == types["ignored_order"]);
+        CHECK(summary_count(html, "n-expired") == types["order_expired"]);
+        CHECK(summary_count(html, "n-user-strikes") == report["user_strikes"]["seen"].get<long long>() + (types["user_strike_end"] - types["user_strike"]));
+        CHECK(summary_count(html, "n-blocked") == outcomes["blocked"]);
+        CHECK(summary_count(html, "n-slipped") == outcomes["slipped"]);
+        CHECK(summary_count(html, "n-landed") == outcomes["hit_by_user"]);
+        CHECK(occurrences(html, "class=\"tl-strike ") == std::size_t(types["strike"]));
+        CHECK(occurrences(html, "class=\"tv-target ") == std::size_t(targets));
+        CHECK(occurrences(html, "class=\"tl-character\"") == std::size_t(types["character"]));
+        CHECK(html.find("box-1.bvh") != std::string::npos);
+        CHECK(html.find("<script") == std::string::npos);
+        CHECK(html.find("http") == std::string::npos);
+    }
+
+    // Cut off in the middle of a line: the page of what came before, a warning that says where.
+    const std::string text = read_text(folder / "bout.jsonl");
+    const std::size_t cut = text.find("\"type\":\"strike\"", text.size() / 2);
+    REQUIRE(cut != std::string::npos);
+    {
+        std::ofstream out(folder / "cut.jsonl", std::ios::binary);
+        out << text.substr(0, cut);
+    }
+    const long long cut_line = std::count(text.begin(), text.begin() + std::ptrdiff_t(cut), '\n') + 1;
+    const auto partial = run_command(kumite + " report " + (folder / "cut.jsonl").string() + " -o " + (folder / "cut.html").string());
+    CHECK(partial.status == 0);
+    CHECK_THAT(partial.err, Catch::Contains((folder / "cut.jsonl").string() + ":" + std::to_string(cut_line) + ":"));
+    const std::string cut_html = read_text(folder / "cut.html");
+    CHECK(cut_html.find("Reading stopped at") != std::string::npos);
+    CHECK(summary_count(cut_html, "n-strikes") < types["strike"]);
+
+    // Usage and input errors; nothing written.
+    CHECK(run_command(kumite + " report " + (folder / "bout.jsonl").string()).status == 2);
+    CHECK(run_command(kumite + " report " + (folder / "none.jsonl").string() + " -o " + (folder / "none.html").string()).status == 1);
+    CHECK(run_command(kumite + " report " + (folder / "bout.jsonl").string() + " --report " + (folder / "bout.jsonl").string() + " -o " +
+                      (folder / "bad.html").string()).status == 1);
+    CHECK_FALSE(std::filesystem::exists(folder / "none.html"));
+    CHECK_FALSE(std::filesystem::exists(folder / "bad.html"));
+    CHECK(run_command(kumite + " play " + db + " --headless --duration 1 --html /no/such/folder/page.html").status == 1);
+}
