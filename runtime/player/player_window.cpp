@@ -223,6 +223,10 @@ private:
         note(text);
     }
 
+    static QString share_text(long long part, long long whole) {
+        return whole > 0 ? QString(" (%1%)").arg(100.0 * double(part) / double(whole), 0, 'f', 0) : QString();
+    }
+
     void draw_hud(QPainter& painter, const QRect& rect) {
         const BoutCounters& c = m_bout.counters();
         const Fighter& fighter = m_bout.fighter(0);
@@ -240,6 +244,20 @@ private:
                      .arg(c.misses)
                      .arg(c.last_contact_error_m < 0 ? QString("-") : QString("%1 cm (%2)").arg(c.last_contact_error_m * 100.0, 0, 'f', 1).arg(c.last_hit ? "hit" : "miss"))
                      .arg(m_bout.head() ? "head tracked" : "no head");
+        // The running session summary (what `kumite report` draws at the end); defended: blocked or slipped, of the
+        // user's strikes that would land.
+        const long long would_land = c.blocked + c.slipped + c.hit_by_user;
+        lines += QString("session: hits %1/%2%3  |  defended %4/%5%6  |  orders %7: %8 performed, %9 refused, %10 expired\n")
+                     .arg(c.hits)
+                     .arg(c.strikes)
+                     .arg(share_text(c.hits, c.strikes))
+                     .arg(c.blocked + c.slipped)
+                     .arg(would_land)
+                     .arg(share_text(c.blocked + c.slipped, would_land))
+                     .arg(c.orders)
+                     .arg(c.orders_performed)
+                     .arg(c.ignored_orders)
+                     .arg(c.orders_expired);
         if (const CaptureUser* capture = m_bout.tracker().capture()) {
             lines += QString("user: recorded, %1 at %2 s of %3 s (%4 m away, loops)\n")
                          .arg(QString::fromStdString(std::filesystem::path(capture->path()).filename().string()))
@@ -268,7 +286,7 @@ private:
         QFont font = painter.font();
         font.setPointSizeF(10.0);
         painter.setFont(font);
-        const QRect top(rect.left() + 10, rect.top() + 8, rect.width() - 20, 110);
+        const QRect top(rect.left() + 10, rect.top() + 8, rect.width() - 20, 130);
         painter.setPen(QColor(0, 0, 0, 160));
         painter.drawText(top.translated(1, 1), Qt::AlignLeft | Qt::AlignTop, lines);
         painter.setPen(QColor(235, 238, 245));
