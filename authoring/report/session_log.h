@@ -3,8 +3,8 @@
 // the user's strikes and the defences, character switches and tracker losses; for the room the user's head path and
 // the fighters' positions; the lines that frame the bout. Built line by line, from a file or from a running bout.
 //
-// Reading is forgiving and never throws: a line that is not an event (not JSON, no time or type, a time going back,
-// a fighter number out of range) stops the reading there, and `stopped` says where and why; what came before is kept.
+// Reading is forgiving and never throws: a line that is not an event (not JSON, no time or type, a negative or
+// absurd time, a fighter number out of range) stops the reading there, and `stopped` says where and why; what came before is kept.
 // Lines of types it does not know are counted and skipped (newer writers, other tools).
 
 #include "kumite/core/result.h"

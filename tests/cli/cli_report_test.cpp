@@ -93,6 +93,19 @@ TEST_CASE("cli: report and play --html draw the bout's events, counts equal to t
     CHECK(cut_html.find("Reading stopped at") != std::string::npos);
     CHECK(summary_count(cut_html, "n-strikes") < types["strike"]);
 
+    // Several fighters: a section each, every strike of each drawn (their events interleave, and an order's end is
+    // stamped with the order's time: not in time order, and read to the end).
+    const auto crowd = run_command(kumite + " play " + db + " --headless --duration 12 --fighters 3 --tracker simulate:punch --commands script:" +
+                                   (folder / "orders.txt").string() + " --report " + (folder / "crowd.json").string() + " --html " +
+                                   (folder / "crowd.html").string());
+    REQUIRE(crowd.status == 0);
+    const std::string crowd_html = read_text(folder / "crowd.html");
+    const nlohmann::json crowd_report = nlohmann::json::parse(read_text(folder / "crowd.json"));
+    CHECK(crowd_html.find("Reading stopped") == std::string::npos);
+    CHECK(occurrences(crowd_html, "<section class=\"fighter\"") == 3);
+    CHECK(summary_count(crowd_html, "n-strikes") == crowd_report["strikes"].get<long long>());
+    CHECK(occurrences(crowd_html, "class=\"tl-strike ") == crowd_report["strikes"].get<std::size_t>());
+
     // Usage and input errors; nothing written.
     CHECK(run_command(kumite + " report " + (folder / "bout.jsonl").string()).status == 2);
     CHECK(run_command(kumite + " report " + (folder / "none.jsonl").string() + " -o " + (folder / "none.html").string()).status == 1);

@@ -141,7 +141,7 @@ TEST_CASE("report: a cut-off or malformed events file gives what came before and
     SECTION("lines that are not events") {
         for (const std::string bad : {"[1,2,3]", "{\"t\":\"soon\",\"type\":\"strike\"}", "{\"t\":1e400,\"type\":\"x\"}", "{\"type\":\"strike\"}",
                                       "{\"t\":5,\"type\":\"strike\",\"fighter\":1000000000}", "{\"t\":5,\"type\":\"strike\",\"fighter\":-1}",
-                                      "{\"t\":0.001,\"type\":\"order\"}", "{\"t\":5,\"type\":7}", "not json at all"}) {
+                                      "{\"t\":-0.5,\"type\":\"order\"}", "{\"t\":5,\"type\":7}", "not json at all"}) {
             INFO(bad);
             const std::size_t middle = text.find('\n', text.size() / 2) + 1;
             const SessionLog log = log_of_text(text.substr(0, middle) + bad + "\n" + text.substr(middle));
