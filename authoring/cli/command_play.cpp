@@ -18,6 +18,7 @@
 #include "kumite/formats/bvh_writer.h"
 #include "kumite/formats/motion_database_file.h"
 #include "kumite/runtime/bout.h"
+#include "kumite/runtime/bout_cast.h"
 #include "player_window.h"
 
 #include <algorithm>
@@ -162,18 +163,8 @@ int run_play(int argc, char** argv) {
     if (!database) return input_error(database.error().message);
     const std::optional<std::string> folder = arguments.value("characters-dir");
     const std::filesystem::path characters_dir = folder ? std::filesystem::path(*folder) : default_characters_dir();
-    std::vector<CharacterEntry> entries = list_characters(characters_dir);
-    if (entries.empty()) return input_error(characters_dir.string() + ": no characters");
-    std::string wanted = arguments.value("character").value_or(entries[0].name);
-    // A path to a character file of one's own joins the shipped ones under its file's stem.
-    if (std::none_of(entries.begin(), entries.end(), [&](const CharacterEntry& entry) { return entry.name == wanted; })) {
-        const std::filesystem::path path(wanted);
-        if (character_file_exists(path)) {
-            const bool stem_taken = std::any_of(entries.begin(), entries.end(), [&](const CharacterEntry& entry) { return entry.name == path.stem().string(); });
-            entries.push_back({stem_taken ? path.filename().string() : path.stem().string(), path, is_gltf_path(path) ? path : std::filesystem::path()});
-            wanted = entries.back().name;
-        }
-    }
+    Result<BoutCast> cast = load_bout_cast(characters_dir, arguments.value("character").value_or(""));
+    if (!cast) return cast.error().code == ErrorCode::invalid ? usage_error(play_spec(), cast.error().message) : input_error(cast.error().message);
     BoutOptions options;
     options.fighters = static_cast<int>(*fighters_count);
     options.lead_s = *lead_s;
@@ -186,22 +177,8 @@ int run_play(int argc, char** argv) {
     if (std::optional<std::string> problem = options.record ? recording_path_problem(*arguments.value("record")) : std::nullopt) {
         return usage_error(play_spec(), "--record " + *problem);
     }
-    options.start_character = -1;
-    std::vector<BoutCharacter> characters;
-    for (std::size_t i = 0; i < entries.size(); ++i) {
-        Result<BvhFile> file = read_character_file(entries[i].file);
-        if (!file) return input_error(file.error().message);
-        std::shared_ptr<const SkinnedMesh> body;
-        if (!entries[i].body.empty()) {
-            Result<std::optional<SkinnedMesh>> loaded = load_character_body(characters_dir, entries[i].body.string(), file->clip.skeleton);
-            if (!loaded) return input_error(loaded.error().message);
-            if (*loaded) body = std::make_shared<const SkinnedMesh>(std::move(**loaded));
-        }
-        characters.push_back({entries[i].name, std::move(*file), std::move(body)});
-        if (entries[i].name == wanted) options.start_character = static_cast<int>(i);
-    }
-    if (options.start_character < 0) return usage_error(play_spec(), "unknown character '" + wanted + "' (see kumite characters)");
-    Result<std::unique_ptr<Bout>> created = Bout::create(database->view(), std::move(characters), std::move(*tracker), options);
+    options.start_character = cast->start;
+    Result<std::unique_ptr<Bout>> created = Bout::create(database->view(), std::move(cast->characters), std::move(*tracker), options);
     if (!created) return input_error(created.error().message);
     Bout& bout = **created;
     if (script) bout.set_script(std::move(*script));
@@ -275,7 +252,7 @@ int run_play(int argc, char** argv) {
     }
     if (const std::optional<std::string> path = arguments.value("record")) {
         const BvhFile& start = bout.starting_character_file();
-        const CharacterEntry& entry = entries[std::size_t(options.start_character)];
+        const CharacterEntry& entry = cast->entries[std::size_t(options.start_character)];
         if (Result<void> written = write_recording(*path, bout.recording(), start, characters_dir, entry.body.empty() ? entry.name : entry.body.string()); !written) {
             return input_error(written.error().message);
         }

@@ -3,6 +3,8 @@
 
 #include "play_output.h"
 
+#include "kumite/runtime/bout_event_json.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -20,8 +22,6 @@ nlohmann::json quantiles_of(const ValueHistogram& values) {
 }
 
 const char* side_text(Side side) { return side == Side::left ? "left" : side == Side::right ? "right" : "any"; }
-// An order's kind or height: "any" when it named none.
-const char* label_text(const char* name) { return std::string_view(name) == "none" ? "any" : name; }
 
 nlohmann::json xyz(const Eigen::Vector3d& point) { return {point.x(), point.y(), point.z()}; }
 
@@ -55,87 +55,7 @@ void write_user_line(std::ostream& out, const Bout& bout) {
     out << "\n";
 }
 
-nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) {
-    const FighterEvent& event = bout_event.event;
-    nlohmann::json line = {{"t", event.t_s}, {"type", fighter_event_name(event.type)}, {"fighter", bout_event.fighter}};
-    const Retriever& retriever = bout.retriever();
-    if (const CaptureUser* capture = bout.tracker().capture()) line["capture_s"] = capture->capture_time_s();
-    switch (event.type) {
-    case FighterEvent::Type::order:
-    case FighterEvent::Type::order_queued:
-    case FighterEvent::Type::order_performed:
-    case FighterEvent::Type::order_expired:
-        line["command"] = retriever.semantics_name(event.semantics);
-        line["side"] = side_text(event.side);
-        line["kind"] = label_text(strike_kind_name(event.kind));
-        line["height"] = label_text(strike_height_name(event.height));
-        if (event.type == FighterEvent::Type::order_performed || event.type == FighterEvent::Type::order_expired) line["waited_s"] = event.waited_s;
-        if (event.type == FighterEvent::Type::order_expired) line["why"] = event.why;
-        break;
-    case FighterEvent::Type::ignored_order:
-        line["why"] = event.why;
-        if (event.semantics >= 0) line["command"] = retriever.semantics_name(event.semantics);
-        line["side"] = side_text(event.side);
-        line["kind"] = label_text(strike_kind_name(event.kind));
-        line["height"] = label_text(strike_height_name(event.height));
-        break;
-    case FighterEvent::Type::state: line["state"] = fighter_state_name(event.state); break;
-    case FighterEvent::Type::strike:
-        line["result"] = event.hit ? "hit" : "miss";
-        line["contact_error_m"] = event.contact_error_m;
-        line["head_distance_m"] = event.head_distance_m;
-        line["range_m"] = event.range_m;
-        line["clip"] = bout.database().string(bout.database().clips[event.clip].name);
-        line["command"] = bout.database().string(bout.database().clips[event.clip].semantics);
-        line["kind"] = strike_kind_name(bout.database().clips[event.clip].strike_kind());
-        line["height"] = strike_height_name(bout.database().clips[event.clip].strike_height());
-        line["clip_side"] = side_text(static_cast<Side>(bout.database().clips[event.clip].side));
-        line["ordered"] = {{"side", side_text(event.side)}, {"kind", label_text(strike_kind_name(event.kind))},
-                           {"height", label_text(strike_height_name(event.height))}};
-        line["varied"] = event.varied;
-        line["effector_speed_at_contact_mps"] = event.effector_speed_mps;
-        line["outcome"] = event.impact ? "impact" : "follow_through";
-        line["aim"] = fighter_aim_name(event.aim);
-        line["target"] = xyz(event.target);
-        line["head_speed_mps"] = event.head_speed_mps;
-        line["prediction_error_m"] = event.prediction_error_m;
-        if (event.aimed_point_at_contact) line["aimed_point_at_contact"] = xyz(*event.aimed_point_at_contact);
-        line["retrieval_offset_m"] = event.retrieval_offset_m;
-        line["steered_m"] = event.steered_m;
-        line["target_part"] = target_part_name(event.target_part);
-        line["reachable"] = event.reachable;
-        break;
-    case FighterEvent::Type::strike_end:
-        line["clip"] = bout.database().string(bout.database().clips[event.clip].name);
-        line["outcome"] = event.impact ? "impact" : "follow_through";
-        line["overshoot_m"] = event.overshoot_m;
-        line["joint_limit_violations"] = event.joint_limit_violations;
-        break;
-    case FighterEvent::Type::character: line["character"] = bout.character_name(event.character); break;
-    case FighterEvent::Type::user_strike:
-        line["hand"] = event.user_strike.hand == 0 ? "left" : "right";
-        line["aimed_at"] = event.user_strike.at_head ? "head" : "chest";
-        line["move"] = defence_move_name(event.user_strike.move);
-        line["arm"] = event.user_strike.arm == 0 ? "left" : "right";
-        line["time_to_impact_s"] = event.user_strike.time_to_impact_s;
-        line["detected"] = event.user_strike.detected;
-        line["hand_speed_mps"] = event.user_strike.hand_speed_mps;
-        break;
-    case FighterEvent::Type::user_strike_end:
-        line["hand"] = event.user_strike.hand == 0 ? "left" : "right";
-        line["aimed_at"] = event.user_strike.at_head ? "head" : "chest";
-        line["move"] = defence_move_name(event.user_strike.move);
-        line["outcome"] = user_strike_outcome_name(event.user_strike.outcome);
-        if (event.user_strike.forearm_to_path_m >= 0.0) line["forearm_to_path_m"] = event.user_strike.forearm_to_path_m;
-        line["detected"] = event.user_strike.detected;
-        if (event.user_strike.blocking_arm >= 0) line["blocking_arm"] = event.user_strike.blocking_arm == 0 ? "left" : "right";
-        line["joint_limit_violations"] = event.joint_limit_violations;
-        line["foot_shift_m"] = event.foot_shift_m;
-        break;
-    default: break;
-    }
-    return line;
-}
+nlohmann::json play_event_json(const Bout& bout, const BoutEvent& bout_event) { return nlohmann::json::parse(bout_event_json(bout, bout_event)); }
 
 // Orders still under way or queued when the bout ended (every other order ended performed, refused or expired).
 static long long waiting_orders(const Bout& bout) {

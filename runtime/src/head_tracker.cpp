@@ -62,8 +62,26 @@ void HeadTracker::set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3
     if (m_scripted) m_scripted->set_opponent(head, chest);
 }
 
+std::unique_ptr<HeadTracker> HeadTracker::fed() {
+    std::unique_ptr<HeadTracker> tracker(new HeadTracker());
+    tracker->m_fed = true;
+    return tracker;
+}
+
+void HeadTracker::feed(const Eigen::Vector3d* head, const UserHands& hands) {
+    m_fed_head_present = head != nullptr;
+    if (head) m_fed_head = *head;
+    m_fed_hands = hands;
+}
+
 const Eigen::Vector3d* HeadTracker::head(double t_s) {
     m_hands = UserHands{};
+    if (m_fed) {
+        if (!m_fed_head_present) return nullptr;
+        m_head = m_fed_head;
+        m_hands = m_fed_hands;
+        return &m_head;
+    }
     if (m_simulated) {
         m_head = m_simulated->head(t_s);
         m_hands = m_simulated->hands(t_s);

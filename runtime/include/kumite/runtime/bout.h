@@ -98,6 +98,7 @@ public:
     double rate_hz() const { return m_options.rate_hz; }
     bool live() const { return m_tracker->live(); }
     const HeadTracker& tracker() const { return *m_tracker; }
+    HeadTracker& tracker() { return *m_tracker; } // to feed a fed tracker (HeadTracker::fed) before a step
     const Eigen::Vector3d* head() const { return m_have_head ? &m_head : nullptr; } // as of the last step
     const UserHands& hands() const { return m_tracker->hands(); }                    // as of the last step
 

@@ -21,6 +21,11 @@ public:
     // `config` is used by dtrack: its port and head body are replaced by those in the spec. Errors say what is
     // wrong with the spec (ErrorCode::invalid) or the file or socket (io, parse).
     static Result<std::unique_ptr<HeadTracker>> open(std::string_view spec, DtrackConfig config, std::uint64_t seed);
+    // A user the caller feeds each frame (an engine's own tracking: the C API, the Python module): feed() before
+    // each step; the head stays as fed until the next feed.
+    static std::unique_ptr<HeadTracker> fed();
+    // The head and hands for the next steps (head null: not tracked). Only for a fed tracker.
+    void feed(const Eigen::Vector3d* head, const UserHands& hands);
 
     // The head this frame (world metres), or null when the source has none (untracked, silent, a replay gap).
     // A live source answers only when a fresh sample arrived, so silence reaches the fighter.
@@ -48,6 +53,9 @@ private:
     std::optional<ReplayTrack> m_replay;
     std::optional<CaptureUser> m_capture;
     std::unique_ptr<DtrackReceiver> m_receiver;
+    bool m_fed = false, m_fed_head_present = false;
+    Eigen::Vector3d m_fed_head = Eigen::Vector3d::Zero();
+    UserHands m_fed_hands;
     HeadSample m_sample;
     Eigen::Vector3d m_head = Eigen::Vector3d::Zero();
     UserHands m_hands;
