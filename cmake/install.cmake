@@ -1,13 +1,14 @@
 # Installs the libraries, headers and a CMake package so that integrators can write
 #   find_package(kumite REQUIRED)
-#   target_link_libraries(engine PRIVATE kumite::runtime)
+#   target_link_libraries(engine PRIVATE kumite::runtime)   # C++
+#   target_link_libraries(engine PRIVATE kumite::c)         # the C API, libkumite.so, kumite.h
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
-install(TARGETS kumite_core kumite_formats kumite_runtime EXPORT kumiteTargets
+install(TARGETS kumite_core kumite_formats kumite_runtime kumite_c EXPORT kumiteTargets
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
-install(DIRECTORY core/include/ formats/include/ runtime/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(DIRECTORY core/include/ formats/include/ runtime/include/ bindings/c/include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(TARGETS kumite kumite-annotate RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(EXPORT kumiteTargets NAMESPACE kumite:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/kumite)
 
