@@ -4,6 +4,7 @@
 #include "capture_loading.h"
 #include "character_catalog.h"
 #include "commands.h"
+#include "adapt_report.h"
 #include "fighter_setup.h"
 
 #include "kumite/runtime/strike_playback.h"
@@ -41,18 +42,6 @@ const CommandSpec& adapt_spec() {
     return spec;
 }
 
-namespace {
-
-const char* reach_name(Reach reach) { return reach == Reach::limb ? "limb" : reach == Reach::torso ? "torso" : "unreachable"; }
-
-nlohmann::json cost_json(std::vector<double> values) {
-    std::sort(values.begin(), values.end());
-    auto at = [&](double q) { return values.empty() ? 0.0 : values[std::min(values.size() - 1, static_cast<std::size_t>(q * values.size()))]; };
-    return {{"median", at(0.5)}, {"p99", at(0.99)}, {"max", values.empty() ? 0.0 : values.back()}};
-}
-
-} // namespace
-
 int run_adapt(int argc, char** argv) {
     Arguments arguments;
     if (std::optional<int> status = parse_command_line(adapt_spec(), argc, argv, arguments)) return *status;
@@ -70,21 +59,20 @@ int run_adapt(int argc, char** argv) {
     FighterSetup setup;
     if (std::optional<int> status = fighter_setup(setup, adapt_spec(), arguments)) return *status;
     const MotionDatabaseView& db = setup.database.view();
-    RetrievalQuery query = setup.query;
+    RetrievalQuery query = setup.stage->query;
     query.target_world = *target;
-    RetrievalWorkspace workspace = setup.retriever->make_workspace();
-    const RetrievalResult retrieved = setup.retriever->query(query, workspace);
+    RetrievalWorkspace workspace = setup.stage->retriever->make_workspace();
+    const RetrievalResult retrieved = setup.stage->retriever->query(query, workspace);
     if (!retrieved.found) {
         return input_error(setup.database_path + ": no " + strike_order_description(*arguments.value("command"), query.side, query.kind, query.height) +
                            " can start from the guard");
     }
 
     const StrikePlan plan{retrieved.clip, retrieved.start_frame, retrieved.contact_frame, retrieved.clip_to_world, *target};
-    const StrikePlayback playback = strike_playback_run(*setup.rig, db, setup.standing, plan, int(*lead));
-    const Skeleton& skeleton = setup.character.clip.skeleton;
-    const bool support_lifted = playback.support_foot_lift_m > 0.02;
+    const StrikePlayback playback = strike_playback_run(*setup.stage->rig, db, setup.stage->standing, plan, int(*lead));
+    const Skeleton& skeleton = setup.stage->character.clip.skeleton;
 
-    const Result<void> written = write_recording(*record, playback.motion, setup.character, characters_folder(arguments), *arguments.value("character"));
+    const Result<void> written = write_recording(*record, playback.motion, setup.stage->character, characters_folder(arguments), *arguments.value("character"));
     if (!written) return input_error(written.error().message);
     const DbClip& clip = db.clips[retrieved.clip];
     if (const std::optional<std::string> filmstrip = arguments.value("filmstrip")) {
@@ -93,33 +81,7 @@ int run_adapt(int argc, char** argv) {
         const Result<void> drawn = view::strike_filmstrip_save(playback, title, *filmstrip);
         if (!drawn) return input_error(drawn.error().message);
     }
-    nlohmann::json report = {
-        {"effector", skeleton.names[playback.effector_joint]},
-        {"contact_frame", playback.contact_frame},
-        {"effector_at_contact", json_vec3(playback.effector_at_contact)},
-        {"target", json_vec3(*target)},
-        {"contact_error_m", playback.contact_error_m},
-        {"hit_frame", playback.hit_frame},
-        {"overshoot_m", playback.overshoot_m},
-        {"effector_speed_at_contact_mps", playback.effector_speed_at_contact_mps},
-        {"approach_direction", json_vec3(playback.approach_direction)},
-        {"joint_limit_violations", playback.joint_limit_violations},
-        {"reachable", playback.reach_at_contact != Reach::unreachable},
-        {"reach", reach_name(playback.reach_at_contact)},
-        {"bone_length_error_m", playback.bone_length_error_m},
-        {"foot_drift_m", playback.foot_drift_m},
-        {"support_foot_lifted", support_lifted},
-        {"support_foot_lift_m", playback.support_foot_lift_m},
-        {"support_feet", {{"left", playback.support_feet[0]}, {"right", playback.support_feet[1]}}},
-        {"frame_cost_us", cost_json(playback.frame_cost_us)},
-        {"frames", playback.motion.frame_count()},
-        {"clip", db.string(clip.name)},
-        {"kind", strike_kind_name(clip.strike_kind())},
-        {"height", strike_height_name(clip.strike_height())},
-        {"side", side_name(static_cast<Side>(clip.side))},
-        {"start_frame", retrieved.start_frame},
-        {"retrieval_contact_frame", retrieved.contact_frame},
-        {"offset_to_fix_m", (retrieved.contact_point_world - *target).norm()}};
+    const nlohmann::json report = adapt_report_json(playback, retrieved, db, skeleton, *target);
     if (report_path) {
         if (Result<void> saved = write_file_atomically(*report_path, report.dump(2) + "\n"); !saved) return input_error(saved.error().message);
     }
@@ -127,7 +89,7 @@ int run_adapt(int argc, char** argv) {
         print_json(report);
     } else {
         std::cout << "wrote " << *record << ": " << playback.motion.frame_count() << " frames, " << db.string(clip.name) << " from frame "
-                  << retrieved.start_frame << "; contact at frame " << playback.contact_frame << " (" << reach_name(playback.reach_at_contact)
+                  << retrieved.start_frame << "; contact at frame " << playback.contact_frame << " (" << report["reach"].get<std::string>()
                   << "), error " << playback.contact_error_m << " m, overshoot " << playback.overshoot_m << " m, "
                   << playback.joint_limit_violations << " joint-limit violations, foot drift " << playback.foot_drift_m << " m, "
                   << report["frame_cost_us"]["median"] << " us/frame\n";

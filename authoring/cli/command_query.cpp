@@ -102,8 +102,8 @@ int run_query(int argc, char** argv) {
 
     FighterSetup setup;
     if (std::optional<int> status = fighter_setup(setup, query_spec(), arguments)) return *status;
-    const Retriever& retriever = *setup.retriever;
-    RetrievalQuery query = setup.query;
+    const Retriever& retriever = *setup.stage->retriever;
+    RetrievalQuery query = setup.stage->query;
     RetrievalWorkspace workspace = retriever.make_workspace();
     const bool exhaustive = arguments.has("exhaustive");
 

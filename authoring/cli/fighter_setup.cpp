@@ -20,18 +20,8 @@ Result<Eigen::Vector3d> parse_point(const std::string& text, const std::string& 
     return point;
 }
 
-const char* side_name(Side side) { return side == Side::left ? "left" : side == Side::right ? "right" : "none"; }
-
 FlagSpec kind_flag() { return {"kind", "KIND", "which kind: straight, hook, uppercut (punches), front, roundhouse, side (kicks), other, any (default)"}; }
 FlagSpec height_flag() { return {"height", "low|middle|high|any", "where the strike lands on its actor (default any)"}; }
-
-std::string strike_order_description(std::string_view semantics, Side side, StrikeKind kind, StrikeHeight height) {
-    std::string text(semantics);
-    if (side != Side::none) text += std::string(" ") + side_name(side);
-    if (kind != StrikeKind::none) text += std::string(" ") + strike_kind_name(kind);
-    if (height != StrikeHeight::none) text += std::string(" ") + strike_height_name(height);
-    return text;
-}
 
 std::optional<int> fighter_setup(FighterSetup& setup, const CommandSpec& spec, const Arguments& arguments) {
     const std::optional<std::string> character_name = arguments.value("character");
@@ -66,7 +56,6 @@ std::optional<int> fighter_setup(FighterSetup& setup, const CommandSpec& spec, c
     const std::optional<std::string> folder = arguments.value("characters-dir");
     Result<BvhFile> character = load_character(folder ? std::filesystem::path(*folder) : default_characters_dir(), *character_name);
     if (!character) return usage_error(spec, character.error().message);
-    setup.character = std::move(*character);
 
     Result<std::filesystem::path> path = database_path_from(arguments);
     if (!path) return input_error(path.error().message);
@@ -74,35 +63,10 @@ std::optional<int> fighter_setup(FighterSetup& setup, const CommandSpec& spec, c
     Result<MotionDatabase> database = MotionDatabase::open(*path);
     if (!database) return input_error(database.error().message);
     setup.database = std::move(*database);
-    Result<RestAnatomy> anatomy = rest_anatomy_build(setup.character.clip, setup.character.body_map);
-    if (!anatomy) return input_error("character " + *character_name + ": " + anatomy.error().message);
-    setup.anatomy = std::move(*anatomy);
-
-    const MotionDatabaseView& db = setup.database.view();
-    setup.retriever = std::make_unique<Retriever>(db, settings);
-    const int semantics = setup.retriever->semantics_id(*command);
-    if (semantics < 0 || *command == "rest" || command->starts_with("step_")) {
-        std::string known;
-        for (const DbClip& clip : db.clips) {
-            const std::string name(db.string(clip.semantics));
-            if (db_clip_is_strike(clip) && known.find(name) == std::string::npos) known += (known.empty() ? "" : ", ") + name;
-        }
-        return input_error(setup.database_path + ": no '" + *command + "' strikes in this database (it has: " + known + ")");
-    }
-    if (setup.retriever->candidate_count(semantics, side, kind, height) == 0) {
-        return input_error(setup.database_path + ": " + strike_order_description(*command, side, kind, height) +
-                           ": the database holds no such strike (kumite db-info lists what it has)");
-    }
-    setup.rig = std::make_unique<CharacterRig>(setup.character.clip.skeleton, setup.anatomy);
-    setup.rig->stand_at_origin(setup.standing, db);
-    setup.rig->still_feature(setup.feature);
-    setup.query.pose_feature = setup.feature;
-    setup.query.heading = setup.rig->heading();
-    setup.query.semantics = semantics;
-    setup.query.side = side;
-    setup.query.kind = kind;
-    setup.query.height = height;
-    setup.query.character = setup.rig->size();
+    Result<std::unique_ptr<StrikeStage>> stage =
+        strike_stage_create(setup.database.view(), std::move(*character), *character_name, {*command, side, kind, height, settings}, setup.database_path);
+    if (!stage) return input_error(stage.error().message);
+    setup.stage = std::move(*stage);
     return std::nullopt;
 }
 
