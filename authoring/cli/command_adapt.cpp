@@ -4,7 +4,7 @@
 #include "capture_loading.h"
 #include "character_catalog.h"
 #include "commands.h"
-#include "adapt_report.h"
+#include "strike_reports.h"
 #include "fighter_setup.h"
 
 #include "kumite/runtime/strike_playback.h"

@@ -4,6 +4,7 @@
 #include "character_catalog.h"
 #include "commands.h"
 #include "fighter_setup.h"
+#include "strike_reports.h"
 
 
 #include <chrono>
@@ -53,34 +54,6 @@ Result<std::vector<Eigen::Vector3d>> read_targets(const std::string& path) {
     return targets;
 }
 
-nlohmann::json result_json(const Retriever& retriever, const RetrievalResult& result, double latency_us) {
-    const MotionDatabaseView& db = retriever.database();
-    const DbClip& clip = db.clips[result.clip];
-    return {{"clip", db.string(clip.name)},
-            {"clip_index", result.clip},
-            {"semantics", db.string(clip.semantics)},
-            {"side", side_name(static_cast<Side>(clip.side))},
-            {"kind", strike_kind_name(clip.strike_kind())},
-            {"height", strike_height_name(clip.strike_height())},
-            {"segment", body_part_name(static_cast<BodyPart>(clip.segment))},
-            {"start_frame", result.start_frame},
-            {"contact_frame", result.contact_frame},
-            {"time_to_contact_s", result.time_to_contact_s},
-            {"d_pose", result.d_pose},
-            {"d_target", result.d_target_m},
-            {"score", result.score},
-            {"latency_us", latency_us},
-            {"contact_point", json_vec3(result.contact_point_world)},
-            {"clip_to_world", {{"angle_rad", result.clip_to_world.angle_rad}, {"x", result.clip_to_world.x}, {"z", result.clip_to_world.z}}},
-            {"counts",
-             {{"clusters_visited", result.counts.clusters_visited},
-              {"candidates_seen", result.counts.candidates_seen},
-              {"inside_box", result.counts.inside_box},
-              {"nodes_visited", result.counts.nodes_visited},
-              {"pose_scored", result.counts.pose_scored},
-              {"target_scored", result.counts.target_scored}}}};
-}
-
 } // namespace
 
 int run_query(int argc, char** argv) {
@@ -118,7 +91,7 @@ int run_query(int argc, char** argv) {
             return input_error(setup.database_path + ": no " + strike_order_description(*arguments.value("command"), query.side, query.kind, query.height) +
                                " has a start far enough before its hit");
         }
-        results.push_back(result_json(retriever, result, latency_us));
+        results.push_back(query_result_json(retriever, result, latency_us));
     }
     const double total_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - all_started).count();
 

@@ -1,6 +1,6 @@
-// The adapted strike's report (adapt_report.h).
+// The reports of one strike's retrieval and adaptation (strike_reports.h).
 
-#include "adapt_report.h"
+#include "strike_reports.h"
 
 #include "strike_stage.h"
 
@@ -52,5 +52,34 @@ nlohmann::json adapt_report_json(const StrikePlayback& playback, const Retrieval
             {"retrieval_contact_frame", retrieved.contact_frame},
             {"offset_to_fix_m", (retrieved.contact_point_world - target).norm()}};
 }
+
+nlohmann::json query_result_json(const Retriever& retriever, const RetrievalResult& result, double latency_us) {
+    const MotionDatabaseView& db = retriever.database();
+    const DbClip& clip = db.clips[result.clip];
+    return {{"clip", db.string(clip.name)},
+            {"clip_index", result.clip},
+            {"semantics", db.string(clip.semantics)},
+            {"side", side_name(static_cast<Side>(clip.side))},
+            {"kind", strike_kind_name(clip.strike_kind())},
+            {"height", strike_height_name(clip.strike_height())},
+            {"segment", body_part_name(static_cast<BodyPart>(clip.segment))},
+            {"start_frame", result.start_frame},
+            {"contact_frame", result.contact_frame},
+            {"time_to_contact_s", result.time_to_contact_s},
+            {"d_pose", result.d_pose},
+            {"d_target", result.d_target_m},
+            {"score", result.score},
+            {"latency_us", latency_us},
+            {"contact_point", vec3(result.contact_point_world)},
+            {"clip_to_world", {{"angle_rad", result.clip_to_world.angle_rad}, {"x", result.clip_to_world.x}, {"z", result.clip_to_world.z}}},
+            {"counts",
+             {{"clusters_visited", result.counts.clusters_visited},
+              {"candidates_seen", result.counts.candidates_seen},
+              {"inside_box", result.counts.inside_box},
+              {"nodes_visited", result.counts.nodes_visited},
+              {"pose_scored", result.counts.pose_scored},
+              {"target_scored", result.counts.target_scored}}}};
+}
+
 
 } // namespace kumite
