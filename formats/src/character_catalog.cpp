@@ -2,6 +2,8 @@
 
 #include "kumite/formats/gltf_reader.h"
 
+#include <dlfcn.h>
+
 #include <algorithm>
 #include <cstdlib>
 
@@ -11,9 +13,14 @@ std::filesystem::path locate_data_folder(const char* environment_variable, const
     if (const char* folder = std::getenv(environment_variable); folder && *folder) return folder;
     std::error_code error;
     if (std::filesystem::exists(relative, error)) return relative;
-    const std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error);
-    if (!error) {
-        const std::filesystem::path repository_root = executable.parent_path().parent_path().parent_path();
+    // The build tree's binaries sit two folders under the repository (build/bin/kumite, build/lib/libkumite.so,
+    // build/python/kumite...so): from the executable, else from the library this code was linked into.
+    std::vector<std::filesystem::path> binaries;
+    if (std::filesystem::path executable = std::filesystem::read_symlink("/proc/self/exe", error); !error) binaries.push_back(executable);
+    Dl_info info{};
+    if (dladdr(reinterpret_cast<const void*>(&locate_data_folder), &info) != 0 && info.dli_fname) binaries.push_back(info.dli_fname);
+    for (const std::filesystem::path& binary : binaries) {
+        const std::filesystem::path repository_root = std::filesystem::absolute(binary, error).parent_path().parent_path().parent_path();
         if (std::filesystem::exists(repository_root / relative, error)) return repository_root / relative;
     }
     return relative;

@@ -11,7 +11,8 @@
 namespace kumite {
 
 // $ENVIRONMENT_VARIABLE, else `relative` in the working directory, else the repository's found from the
-// executable (build/bin/kumite -> data/...), else `relative` as it is.
+// executable or the shared library this code is in (build/bin/kumite, build/lib/libkumite.so, build/python/kumite*.so
+// -> data/...), else `relative` as it is.
 std::filesystem::path locate_data_folder(const char* environment_variable, const std::filesystem::path& relative);
 
 // $KUMITE_CHARACTERS_DIR, else data/characters (see locate_data_folder).
