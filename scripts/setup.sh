@@ -6,9 +6,10 @@
 set -euo pipefail
 
 packages=(build-essential cmake g++ libeigen3-dev nlohmann-json3-dev libtinygltf-dev catch2 python3 libopenexr-dev libflann-dev
-          qt6-base-dev qt6-qpa-plugins libqt6opengl6-dev libgl-dev libxkbcommon-dev fonts-dejavu-core)
+          qt6-base-dev qt6-qpa-plugins libqt6opengl6-dev libgl-dev libxkbcommon-dev fonts-dejavu-core
+          pybind11-dev python3-dev python3-numpy)
 if [[ "${1:-}" == "--test" ]]; then
-  packages+=(blender python3-numpy clang-14 libfuzzer-14-dev openexr xvfb xauth libgl1-mesa-dri)
+  packages+=(blender python3-pytest python3-matplotlib clang-14 libfuzzer-14-dev openexr xvfb xauth libgl1-mesa-dri)
 fi
 
 missing=()
