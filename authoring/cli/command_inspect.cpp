@@ -35,12 +35,20 @@ nlohmann::json inspect_json(const BvhFile& file, const std::filesystem::path& pa
     }
     document["rotation_orders"] = orders;
 
-    nlohmann::json body_map = nlohmann::json::object();
+    nlohmann::json body_map = nlohmann::json::object(), sources = nlohmann::json::object();
     for (int part = 0; part < k_body_part_count; ++part) {
         const int joint = file.body_map.joints[part];
-        if (joint >= 0) body_map[std::string(body_part_name(static_cast<BodyPart>(part)))] = clip.skeleton.names[joint];
+        if (joint < 0) continue;
+        const std::string name(body_part_name(static_cast<BodyPart>(part)));
+        body_map[name] = clip.skeleton.names[joint];
+        sources[name] = std::string(body_map_source_name(file.body_map.sources[std::size_t(part)]));
     }
     document["body_map"] = body_map;
+    // How each part was found: by name (a known naming scheme), by the skeleton's structure, or from a file.
+    document["body_map_sources"] = sources;
+    if (std::any_of(file.body_map.sources.begin(), file.body_map.sources.end(), [](BodyMapSource s) { return s == BodyMapSource::structure; })) {
+        document["body_map_structure_confidence"] = file.body_map.structure_confidence;
+    }
     nlohmann::json unmapped = nlohmann::json::array();
     for (int joint = 0; joint < clip.skeleton.joint_count(); ++joint) {
         if (!file.body_map.part_of(joint)) unmapped.push_back(clip.skeleton.names[joint]);
@@ -65,7 +73,12 @@ void print_inspect_text(const nlohmann::json& document) {
     for (const auto& order : document["rotation_orders"]) std::cout << order.get<std::string>() << " ";
     std::cout << "\n  body map     " << document["body_map"].size() << " of " << k_body_part_count << " parts\n";
     for (const auto& [part, joint] : document["body_map"].items()) {
-        std::cout << "    " << std::left << std::setw(12) << part << joint.get<std::string>() << "\n";
+        const std::string source = document["body_map_sources"].value(part, std::string("name"));
+        std::cout << "    " << std::left << std::setw(12) << part << joint.get<std::string>() << (source == "name" ? "" : "  (by " + source + ")") << "\n";
+    }
+    if (document.contains("body_map_structure_confidence")) {
+        std::cout << "  structure    confidence " << std::setprecision(2) << document["body_map_structure_confidence"].get<double>()
+                  << " (how alike the left and right limbs are)\n";
     }
     std::cout << "  unmapped     " << document["unmapped"].size() << " joints\n";
 }

@@ -240,7 +240,40 @@ int lca_of_present(const Skeleton& skeleton, int a, int b) {
     return lowest_common_ancestor(skeleton, a, b);
 }
 
+// The parts a strike cannot do without.
+constexpr BodyPart k_needed_parts[] = {BodyPart::pelvis, BodyPart::chest, BodyPart::head, BodyPart::upper_arm_l, BodyPart::forearm_l,
+                                       BodyPart::hand_l, BodyPart::upper_arm_r, BodyPart::forearm_r, BodyPart::hand_r, BodyPart::thigh_l,
+                                       BodyPart::shin_l, BodyPart::foot_l, BodyPart::thigh_r, BodyPart::shin_r, BodyPart::foot_r};
+
+// Names that leave a needed part unfound: the parts they left, from the structure, when it agrees with them.
+BodyMap with_structure(const Skeleton& skeleton, const BodyMap& by_name) {
+    const bool complete = std::all_of(std::begin(k_needed_parts), std::end(k_needed_parts), [&](BodyPart part) { return by_name.has(part); });
+    if (complete) return by_name;
+    const BodyMap by_structure = detect_body_map_by_structure(skeleton);
+    if (by_structure.mapped_count() == 0) return by_name;
+    for (BodyPart part : k_needed_parts) {
+        if (by_name.has(part) && by_structure.joint(part) != by_name.joint(part)) return by_name; // they disagree: trust neither blindly
+    }
+    BodyMap merged = by_name;
+    for (int part = 0; part < k_body_part_count; ++part) {
+        if (merged.joints[std::size_t(part)] < 0 && by_structure.joints[std::size_t(part)] >= 0) {
+            merged.set(static_cast<BodyPart>(part), by_structure.joints[std::size_t(part)], BodyMapSource::structure);
+        }
+    }
+    merged.structure_confidence = by_structure.structure_confidence;
+    return merged;
+}
+
 } // namespace
+
+std::string_view body_map_source_name(BodyMapSource source) {
+    switch (source) {
+    case BodyMapSource::name: return "name";
+    case BodyMapSource::structure: return "structure";
+    case BodyMapSource::file: return "file";
+    default: return "none";
+    }
+}
 
 BodyMap detect_body_map(const Skeleton& skeleton) {
     std::vector<NamedJoint> named;
@@ -277,7 +310,10 @@ BodyMap detect_body_map(const Skeleton& skeleton) {
     if (pelvis >= 0 && chest >= 0 && chest != pelvis && skeleton.is_ancestor(pelvis, chest)) {
         map.set(BodyPart::spine, first_joint_below(skeleton, pelvis, chest));
     }
-    return map;
+    for (int part = 0; part < k_body_part_count; ++part) {
+        if (map.joints[std::size_t(part)] >= 0) map.sources[std::size_t(part)] = BodyMapSource::name;
+    }
+    return with_structure(skeleton, map);
 }
 
 } // namespace kumite

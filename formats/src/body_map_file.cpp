@@ -25,7 +25,7 @@ Result<BodyMap> body_map_apply_override(const BodyMap& body_map, const Skeleton&
                                                       "upper_arm_l, forearm_l, hand_l, thigh_l, shin_l, foot_l, toe_l and the _r twins)");
         }
         if (joint_name.is_null()) {
-            result.set(*part, -1);
+            result.set(*part, -1, BodyMapSource::none);
             continue;
         }
         if (!joint_name.is_string()) {
@@ -36,7 +36,7 @@ Result<BodyMap> body_map_apply_override(const BodyMap& body_map, const Skeleton&
             return make_error(ErrorCode::invalid, source + ": part \"" + part_name + "\" names joint \"" +
                                                       joint_name.get<std::string>() + "\", which the skeleton does not have");
         }
-        result.set(*part, *joint);
+        result.set(*part, *joint, BodyMapSource::file);
     }
     return result;
 }

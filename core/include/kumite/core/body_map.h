@@ -6,6 +6,7 @@
 #include "kumite/core/skeleton.h"
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string_view>
 
@@ -26,23 +27,38 @@ BodyPart body_part_mirrored(BodyPart part);                // hand_l <-> hand_r,
 
 enum class Side { none, left, right };
 
+// How a part's joint was found: by its name, by the skeleton's structure (names gave too little), or from a
+// .bodymap.json the user wrote.
+enum class BodyMapSource : std::uint8_t { none, name, structure, file };
+std::string_view body_map_source_name(BodyMapSource source); // "name", "structure", "file", "none"
+
 struct BodyMap {
-    std::array<int, k_body_part_count> joints; // [part] joint index, or -1 when the skeleton lacks it
+    std::array<int, k_body_part_count> joints;            // [part] joint index, or -1 when the skeleton lacks it
+    std::array<BodyMapSource, k_body_part_count> sources{}; // [part] how it was found
+    double structure_confidence = 0.0; // when parts came from structure: how alike left and right limbs are (0-1)
 
     BodyMap() { joints.fill(-1); }
     int joint(BodyPart part) const { return joints[static_cast<int>(part)]; }
+    BodyMapSource source(BodyPart part) const { return sources[static_cast<int>(part)]; }
     void set(BodyPart part, int joint) { joints[static_cast<int>(part)] = joint; }
+    void set(BodyPart part, int joint, BodyMapSource source) { set(part, joint), sources[static_cast<int>(part)] = joint >= 0 ? source : BodyMapSource::none; }
     bool has(BodyPart part) const { return joint(part) >= 0; }
     int mapped_count() const;
     std::optional<BodyPart> part_of(int joint) const;
 };
 
-// Detects the parts from joint names and structure. Naming schemes handled: Bandai (`UpperArm_L`),
+// Detects the parts from joint names and structure; when the names leave a part a strike needs unfound, the parts
+// they left are taken from detect_body_map_by_structure (if it agrees with what the names found). Naming schemes handled: Bandai (`UpperArm_L`),
 // CMU/Hahne (`LeftUpLeg`), bvh11/Biovision (`LeftHip`, `LeftCollar`, `lhand`), Mixamo (`mixamorig:`),
 // MotionBuilder/HumanIK (`Character1_`), Reallusion CC4 (`CC_Base_L_`), Blender (`hand.L`), LaFAN-style.
 // Hands and feet are found by name; arms and legs by walking up from them; pelvis, chest, spine and neck from
 // where the limbs and the head branch.
 BodyMap detect_body_map(const Skeleton& skeleton);
+
+// The parts from the tree and the rest pose alone, ignoring names (body_structure.cpp): legs are the chains that
+// end lowest, the pelvis where they meet, the spine the chain to the topmost end, arms the chains that leave the
+// spine sideways. Needs a standing rest pose (T or A), Y up. An empty map when no humanoid is found.
+BodyMap detect_body_map_by_structure(const Skeleton& skeleton);
 
 // The side a joint name denotes and the name with prefixes, side marks and separators removed, lowercase:
 // "mixamorig:LeftForeArm" -> {left, "forearm"}, "CC_Base_L_Thigh" -> {left, "thigh"}, "Hand_R" -> {right, "hand"}.
