@@ -240,22 +240,22 @@ int lca_of_present(const Skeleton& skeleton, int a, int b) {
     return lowest_common_ancestor(skeleton, a, b);
 }
 
-// The parts a strike cannot do without.
-constexpr BodyPart k_needed_parts[] = {BodyPart::pelvis, BodyPart::chest, BodyPart::head, BodyPart::upper_arm_l, BodyPart::forearm_l,
-                                       BodyPart::hand_l, BodyPart::upper_arm_r, BodyPart::forearm_r, BodyPart::hand_r, BodyPart::thigh_l,
-                                       BodyPart::shin_l, BodyPart::foot_l, BodyPart::thigh_r, BodyPart::shin_r, BodyPart::foot_r};
-
 // Names that leave a needed part unfound: the parts they left, from the structure, when it agrees with them.
 BodyMap with_structure(const Skeleton& skeleton, const BodyMap& by_name) {
-    const bool complete = std::all_of(std::begin(k_needed_parts), std::end(k_needed_parts), [&](BodyPart part) { return by_name.has(part); });
+    const bool complete = std::all_of(std::begin(k_strike_parts), std::end(k_strike_parts), [&](BodyPart part) { return by_name.has(part); });
     if (complete) return by_name;
     const BodyMap by_structure = detect_body_map_by_structure(skeleton);
     if (by_structure.mapped_count() == 0) return by_name;
-    for (BodyPart part : k_needed_parts) {
+    // A long head bone reads to the structure as the skull's top, the head one joint lower: the names know better.
+    const bool head_one_below = by_name.has(BodyPart::head) && by_structure.has(BodyPart::head) &&
+                                skeleton.parents[std::size_t(by_name.joint(BodyPart::head))] == by_structure.joint(BodyPart::head);
+    for (BodyPart part : k_strike_parts) {
+        if (part == BodyPart::head && head_one_below) continue;
         if (by_name.has(part) && by_structure.joint(part) != by_name.joint(part)) return by_name; // they disagree: trust neither blindly
     }
     BodyMap merged = by_name;
     for (int part = 0; part < k_body_part_count; ++part) {
+        if (head_one_below && static_cast<BodyPart>(part) == BodyPart::neck) continue;
         if (merged.joints[std::size_t(part)] < 0 && by_structure.joints[std::size_t(part)] >= 0) {
             merged.set(static_cast<BodyPart>(part), by_structure.joints[std::size_t(part)], BodyMapSource::structure);
         }
@@ -271,6 +271,7 @@ std::string_view body_map_source_name(BodyMapSource source) {
     case BodyMapSource::name: return "name";
     case BodyMapSource::structure: return "structure";
     case BodyMapSource::file: return "file";
+    case BodyMapSource::vrm: return "vrm";
     default: return "none";
     }
 }

@@ -122,10 +122,15 @@ Arm arm_of(const Rest& rest, const std::vector<int>& chain, const Eigen::Vector3
     if (shoulder_at >= chain.size()) return {};
     std::size_t wrist_at = chain.size();
     for (std::size_t i = shoulder_at + 1; i < chain.size(); ++i) {
-        if (rest.children[std::size_t(chain[i])].size() >= 2) {
-            wrist_at = i;
-            break;
-        }
+        const std::vector<int>& children = rest.children[std::size_t(chain[i])];
+        if (children.size() < 2) continue;
+        // Fingers start near the wrist; branches that start farther out than half the arm so far (a robot's
+        // palms hung from its elbow) start at the wrist instead: the next joint of the chain.
+        double spread = 0.0;
+        for (int child : children) spread += (rest.at[std::size_t(child)] - rest.at[std::size_t(chain[i])]).norm() / double(children.size());
+        const double so_far = (rest.at[std::size_t(chain[i])] - rest.at[std::size_t(chain[shoulder_at])]).norm();
+        wrist_at = spread > 0.5 * so_far && i + 1 < chain.size() ? i + 1 : i;
+        break;
     }
     if (wrist_at == chain.size()) {
         const std::size_t end = chain.size() - 1;
@@ -139,6 +144,14 @@ Arm arm_of(const Rest& rest, const std::vector<int>& chain, const Eigen::Vector3
     const Eigen::Vector3d shoulder = rest.at[std::size_t(arm.upper_arm)];
     const double reach = (rest.at[std::size_t(arm.hand)] - shoulder).norm();
     arm.forearm = closest_in(chain, shoulder_at + 1, wrist_at, 0.55 * reach, [&](int j) { return (rest.at[std::size_t(j)] - shoulder).norm(); });
+    // A joint just past the shoulder (within a fifth of the way to the elbow) is the real shoulder, the one before
+    // it a short clavicle.
+    const std::size_t elbow_at = index_in(chain, arm.forearm);
+    if (shoulder_at + 1 < elbow_at &&
+        (rest.at[std::size_t(chain[shoulder_at + 1])] - shoulder).norm() < 0.2 * (rest.at[std::size_t(arm.forearm)] - shoulder).norm()) {
+        arm.clavicle = chain[shoulder_at];
+        arm.upper_arm = chain[shoulder_at + 1];
+    }
     return arm;
 }
 

@@ -1,6 +1,9 @@
 #include "kumite/formats/gltf_reader.h"
 
 #include "gltf_accessors.h"
+#include "gltf_body.h"
+#include "gltf_vrm.h"
+#include "kumite/formats/body_map_file.h"
 #include "kumite/core/standing_height.h"
 
 #include <algorithm>
@@ -11,7 +14,9 @@
 namespace kumite {
 namespace {
 
+using gltf::BodySkeleton;
 using gltf::fail;
+using gltf::SkinJoints;
 
 // A node's local transform (TRS or matrix), checked finite.
 Result<Eigen::Matrix4d> node_local(const tinygltf::Node& node, int index) {
@@ -119,15 +124,51 @@ void add_end_sites_from_mesh(Skeleton& skeleton, const SkinnedMesh& mesh) {
     }
 }
 
+// The rest pose of each skin joint as world transforms: the nodes' own when the mesh was bound in it (every
+// joint's G * IBM is one matrix: identity, or an armature's scale and turn); else the bind pose the inverse bind
+// matrices hold, G = M * IBM^-1 with M the skinned mesh node's world transform (a file saved in an animation's
+// pose), said in a warning.
+std::vector<Eigen::Matrix4d> rest_pose(const tinygltf::Model& model, const tinygltf::Skin& skin, const std::vector<Eigen::Matrix4d>& worlds,
+                                       const std::vector<Eigen::Matrix4d>& inverse_binds, std::vector<std::string>& warnings) {
+    std::vector<Eigen::Matrix4d> nodes;
+    for (int node : skin.joints) nodes.push_back(worlds[std::size_t(node)]);
+    if (skin.inverseBindMatrices < 0) return nodes; // no bind pose but the nodes'
+    const Eigen::Matrix4d first = nodes[0] * inverse_binds[0];
+    const double tolerance = 1e-3 * std::max(1.0, first.cwiseAbs().maxCoeff());
+    double worst = 0.0;
+    for (std::size_t k = 0; k < nodes.size(); ++k) worst = std::max(worst, (nodes[k] * inverse_binds[k] - first).cwiseAbs().maxCoeff());
+    if (worst <= tolerance) return nodes;
+    Eigen::Matrix4d mesh_world = Eigen::Matrix4d::Identity();
+    for (std::size_t n = 0; n < model.nodes.size(); ++n) {
+        if (model.nodes[n].skin == 0 && model.nodes[n].mesh >= 0) {
+            mesh_world = worlds[n];
+            break;
+        }
+    }
+    std::vector<Eigen::Matrix4d> bind(nodes.size());
+    for (std::size_t k = 0; k < nodes.size(); ++k) {
+        const double determinant = inverse_binds[k].determinant();
+        if (!(std::abs(determinant) > 1e-12)) {
+            warnings.push_back("skin 0's inverse bind matrix " + std::to_string(k) + " cannot be inverted; the rest pose is the nodes' own");
+            return nodes;
+        }
+        bind[k] = mesh_world * inverse_binds[k].inverse();
+    }
+    warnings.push_back("the nodes are not in the pose the mesh was bound in (joints up to " + std::to_string(worst) +
+                       " off); the rest pose is the bind pose from the inverse bind matrices");
+    return bind;
+}
+
 } // namespace
 
 bool is_gltf_path(const std::filesystem::path& path) {
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return extension == ".glb" || extension == ".gltf";
+    return extension == ".glb" || extension == ".gltf" || extension == ".vrm";
 }
 
-Result<GltfCharacter> gltf_parse(std::span<const std::uint8_t> bytes, std::string_view source_name, const std::filesystem::path& base_dir) {
+Result<GltfCharacter> gltf_parse(std::span<const std::uint8_t> bytes, std::string_view source_name, const std::filesystem::path& base_dir,
+                                 const std::filesystem::path& body_map_file) {
     const std::string source(source_name);
     auto with_source = [&](const Error& error) { return make_error(error.code, source + ": " + error.message); };
     Result<tinygltf::Model> loaded = gltf::load_model(bytes, base_dir);
@@ -145,7 +186,6 @@ Result<GltfCharacter> gltf_parse(std::span<const std::uint8_t> bytes, std::strin
     Result<std::vector<Eigen::Matrix4d>> worlds = node_worlds(model, node_parents);
     if (!worlds) return with_source(worlds.error());
 
-    // Joints in parent-first order: the skin's joints sorted by depth, each parented to its nearest joint ancestor.
     const int joint_count = static_cast<int>(skin.joints.size());
     std::vector<int> joint_of_node(node_count, -1);
     for (int k = 0; k < joint_count; ++k) {
@@ -154,69 +194,70 @@ Result<GltfCharacter> gltf_parse(std::span<const std::uint8_t> bytes, std::strin
         if (joint_of_node[node] >= 0) return with_source(fail("skin 0: node " + std::to_string(node) + " is listed twice as a joint"));
         joint_of_node[node] = k;
     }
-    auto joint_parent_node = [&](int node) {
+    SkinJoints joints;
+    joints.parent.resize(joint_count, -1);
+    joints.node_depth.resize(joint_count, 0);
+    for (int k = 0; k < joint_count; ++k) {
+        const int node = skin.joints[k];
         for (int at = node_parents[node]; at >= 0; at = node_parents[at]) {
-            if (joint_of_node[at] >= 0) return at;
+            if (joints.parent[k] < 0 && joint_of_node[at] >= 0) joints.parent[k] = joint_of_node[at];
+            ++joints.node_depth[k];
         }
-        return -1;
-    };
-    auto depth = [&](int node) {
-        int d = 0;
-        for (int at = node_parents[node]; at >= 0; at = node_parents[at]) ++d;
-        return d;
-    };
-    std::vector<int> order(skin.joints.begin(), skin.joints.end()); // nodes, parents first
-    std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return depth(a) < depth(b); });
-    int roots = 0;
-    for (int node : order) roots += joint_parent_node(node) < 0;
-    if (roots != 1) return with_source(fail("skin 0's joints form " + std::to_string(roots) + " separate trees; a character needs one skeleton root"));
-
+        joints.names.push_back(model.nodes[node].name.empty() ? "joint" + std::to_string(node) : model.nodes[node].name);
+    }
+    Result<std::vector<Eigen::Matrix4d>> inverse_binds = gltf::inverse_bind_matrices(model, skin);
+    if (!inverse_binds) return with_source(inverse_binds.error());
     GltfCharacter result;
     result.node_count = node_count;
-    Skeleton& skeleton = result.character.clip.skeleton;
-    std::vector<int> skeleton_of_skin(joint_count, -1); // skin joint index -> skeleton joint
-    std::vector<int> skeleton_of_node(node_count, -1);
-    for (int node : order) {
-        const int index = skeleton.joint_count();
-        skeleton_of_node[node] = index;
-        skeleton_of_skin[joint_of_node[node]] = index;
-        const int parent_node = joint_parent_node(node);
-        const int parent = parent_node >= 0 ? skeleton_of_node[parent_node] : -1;
-        const Eigen::Vector3d position = (*worlds)[node].block<3, 1>(0, 3);
-        const Eigen::Vector3d parent_position = parent_node >= 0 ? Eigen::Vector3d((*worlds)[parent_node].block<3, 1>(0, 3)) : Eigen::Vector3d::Zero();
-        std::string name = model.nodes[node].name.empty() ? "joint" + std::to_string(node) : model.nodes[node].name;
-        skeleton.names.push_back(std::move(name));
-        skeleton.parents.push_back(parent);
-        skeleton.rest_offsets.push_back(position - parent_position);
+    std::vector<std::string>& warnings = result.character.warnings;
+    joints.rest = rest_pose(model, skin, *worlds, *inverse_binds, warnings);
+    for (const Eigen::Matrix4d& rest : joints.rest) joints.positions.push_back(rest.block<3, 1>(0, 3));
+
+    // The mesh first, on skin joint indices, for the weights that tell the body from the controls.
+    std::vector<int> identity(joint_count);
+    for (int k = 0; k < joint_count; ++k) identity[k] = k;
+    if (Result<void> read = gltf::read_skinned_primitives(model, identity, result.mesh); !read) return with_source(read.error());
+    if (result.mesh.triangles.empty()) return with_source(fail("no triangles are skinned by skin 0"));
+    std::vector<double> weights(joint_count, 0.0);
+    for (std::size_t v = 0; v < result.mesh.vertex_count(); ++v) {
+        for (int i = 0; i < 4; ++i) weights[result.mesh.joints[v][i]] += result.mesh.weights[v][i];
     }
+
+    const std::optional<gltf::VrmHumanoid> vrm = gltf::vrm_humanoid(model);
+    if (vrm) warnings.insert(warnings.end(), vrm->warnings.begin(), vrm->warnings.end());
+    BodySkeleton body = body_skeleton(joints, weights, vrm ? &*vrm : nullptr, skin.joints);
+    warnings.insert(warnings.end(), body.warnings.begin(), body.warnings.end());
+    Skeleton& skeleton = result.character.clip.skeleton;
+    skeleton = std::move(body.skeleton);
+    result.character.body_map = body.body_map;
+    if (!body_map_file.empty() && std::filesystem::exists(body_map_file)) {
+        Result<BodyMap> overridden = body_map_apply_override_file(result.character.body_map, skeleton, body_map_file);
+        if (!overridden) return overridden.error();
+        result.character.body_map = *overridden;
+    }
+    if (Result<void> complete = gltf::check_strike_parts(result.character.body_map, body_map_sidecar_path(source)); !complete) return with_source(complete.error());
+
+    const int kept = skeleton.joint_count();
     Clip& clip = result.character.clip;
     clip.frame_time_s = 1.0 / 30.0;
     clip.root_translations.assign(1, skeleton.rest_offsets[0]);
-    clip.local_rotations.assign(joint_count, Eigen::Quaterniond::Identity());
-    result.character.layout = rotation_layout(joint_count);
+    clip.local_rotations.assign(kept, Eigen::Quaterniond::Identity());
+    result.character.layout = rotation_layout(kept);
     result.character.unit = LengthUnit{"m", 1.0};
     result.character.unit_detected = false;
-    result.character.body_map = detect_body_map(skeleton);
-    for (BodyPart part : {BodyPart::pelvis, BodyPart::chest, BodyPart::head, BodyPart::upper_arm_l, BodyPart::forearm_l, BodyPart::hand_l,
-                          BodyPart::upper_arm_r, BodyPart::forearm_r, BodyPart::hand_r, BodyPart::thigh_l, BodyPart::shin_l, BodyPart::foot_l,
-                          BodyPart::thigh_r, BodyPart::shin_r, BodyPart::foot_r}) {
-        if (result.character.body_map.joint(part) < 0) {
-            return with_source(fail("no humanoid skeleton: no joint found for " + std::string(body_part_name(part)) +
-                                    " (joint names such as Mixamo's, Unreal's, Rigify's or VRM's are recognised)"));
-        }
-    }
+
     // The skinned mesh: bind_to_rest[j] = T_j(rest)^-1 * G_j(rest) * IBM_j, T_j(rest) the joint's position only.
-    Result<std::vector<Eigen::Matrix4d>> inverse_binds = gltf::inverse_bind_matrices(model, skin);
-    if (!inverse_binds) return with_source(inverse_binds.error());
-    result.mesh.bind_to_rest.resize(joint_count);
+    result.mesh.bind_to_rest.resize(kept);
     for (int k = 0; k < joint_count; ++k) {
-        const int node = skin.joints[k];
+        const int j = body.skeleton_of_skin[k];
+        if (j < 0) continue;
         Eigen::Matrix4d rest_inverse = Eigen::Matrix4d::Identity();
-        rest_inverse.block<3, 1>(0, 3) = -(*worlds)[node].block<3, 1>(0, 3);
-        result.mesh.bind_to_rest[skeleton_of_skin[k]] = (rest_inverse * (*worlds)[node] * (*inverse_binds)[k]).cast<float>();
+        rest_inverse.block<3, 1>(0, 3) = -joints.positions[k];
+        result.mesh.bind_to_rest[j] = (rest_inverse * joints.rest[k] * (*inverse_binds)[k]).cast<float>();
     }
-    if (Result<void> read = gltf::read_skinned_primitives(model, skeleton_of_skin, result.mesh); !read) return with_source(read.error());
-    if (result.mesh.triangles.empty()) return with_source(fail("no triangles are skinned by skin 0"));
+    for (std::array<std::uint16_t, 4>& ids : result.mesh.joints) {
+        for (std::uint16_t& id : ids) id = static_cast<std::uint16_t>(std::max(body.skeleton_of_skin[id], 0)); // left-out joints weigh nothing
+    }
     add_end_sites_from_mesh(skeleton, result.mesh);
     result.character.height_m = standing_height(clip, result.character.body_map).height;
     if (!(result.character.height_m >= 0.3 && result.character.height_m <= 5.0)) {
@@ -237,7 +278,7 @@ Result<GltfCharacter> gltf_read_file(const std::filesystem::path& path) {
     stream.seekg(0);
     std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
     if (size > 0 && !stream.read(reinterpret_cast<char*>(bytes.data()), size)) return make_error(ErrorCode::io, source + ": cannot read");
-    return gltf_parse(bytes, source, path.parent_path());
+    return gltf_parse(bytes, source, path.parent_path(), body_map_sidecar_path(path));
 }
 
 } // namespace kumite

@@ -27,10 +27,16 @@ BodyPart body_part_mirrored(BodyPart part);                // hand_l <-> hand_r,
 
 enum class Side { none, left, right };
 
-// How a part's joint was found: by its name, by the skeleton's structure (names gave too little), or from a
-// .bodymap.json the user wrote.
-enum class BodyMapSource : std::uint8_t { none, name, structure, file };
-std::string_view body_map_source_name(BodyMapSource source); // "name", "structure", "file", "none"
+// How a part's joint was found: by its name, by the skeleton's structure (names gave too little), from a
+// .bodymap.json the user wrote, or from a VRM avatar's own humanoid bone map.
+enum class BodyMapSource : std::uint8_t { none, name, structure, file, vrm };
+std::string_view body_map_source_name(BodyMapSource source); // "name", "structure", "file", "vrm", "none"
+
+// The parts a strike cannot do without: pelvis, chest, head, both arms (shoulder, elbow, wrist) and both legs
+// (hip, knee, ankle).
+inline constexpr BodyPart k_strike_parts[] = {BodyPart::pelvis, BodyPart::chest, BodyPart::head, BodyPart::upper_arm_l, BodyPart::forearm_l,
+                                              BodyPart::hand_l, BodyPart::upper_arm_r, BodyPart::forearm_r, BodyPart::hand_r, BodyPart::thigh_l,
+                                              BodyPart::shin_l, BodyPart::foot_l, BodyPart::thigh_r, BodyPart::shin_r, BodyPart::foot_r};
 
 struct BodyMap {
     std::array<int, k_body_part_count> joints;            // [part] joint index, or -1 when the skeleton lacks it
