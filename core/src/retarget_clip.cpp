@@ -169,11 +169,14 @@ Clip retarget_clip(RetargetReport& report, const Clip& source, const RestAnatomy
                 ++count;
             }
             pins.hip_shift_world /= count;
-            // With both feet down one shift cannot suit both; each pin gives up half of what is left, trading a
-            // few millimetres of slide for leg extension.
+            // With both feet down one shift cannot suit both: the knees bend differently from the source's, and a
+            // pin moves only when its leg could not reach it from the shifted hip (it is drawn in to the leg's reach).
             for (int limb = 2; limb < 4 && count == 2; ++limb) {
-                const Eigen::Vector3d shifted_free = decoder.model_positions()[target_anatomy.limbs[limb].extremity] + pins.hip_shift_world;
-                pins.extremity_world[limb] -= 0.5 * (pins.extremity_world[limb] - shifted_free);
+                const LimbChain& leg = target_anatomy.limbs[limb];
+                const Eigen::Vector3d hip = decoder.model_positions()[leg.root] + pins.hip_shift_world;
+                const Eigen::Vector3d reach = pins.extremity_world[limb] - hip;
+                const double longest = 0.999 * leg.length();
+                if (reach.norm() > longest) pins.extremity_world[limb] = hip + reach * (longest / reach.norm());
             }
             decoder.decode(pose, encoded[frame], pins);
         }
