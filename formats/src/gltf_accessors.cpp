@@ -1,5 +1,7 @@
 #include "gltf_accessors.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -16,6 +18,21 @@ T read_le(const std::uint8_t* at) {
     T value;
     std::memcpy(&value, at, sizeof value);
     return value;
+}
+
+// Why a .gltf that tinygltf refused without a word is not glTF 2.0: files written while 2.0 was a draft
+// (COLLADA2GLTF 2017) name a skin's joints in `jointNames` and each joint in its node's `jointName`.
+std::string draft_reason(std::span<const std::uint8_t> bytes) {
+    const nlohmann::json json = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, false);
+    if (!json.is_object() || !json.contains("skins") || !json["skins"].is_array()) return {};
+    for (std::size_t s = 0; s < json["skins"].size(); ++s) {
+        const nlohmann::json& skin = json["skins"][s];
+        if (skin.is_object() && !skin.contains("joints") && skin.contains("jointNames")) {
+            return "skin " + std::to_string(s) + " lists \"jointNames\" instead of \"joints\": a file from glTF 2.0's draft, before its release; "
+                   "export it again with a current exporter";
+        }
+    }
+    return {};
 }
 
 } // namespace
@@ -36,6 +53,7 @@ Result<tinygltf::Model> load_model(std::span<const std::uint8_t> bytes, const st
     }
     if (!ok) {
         while (!error.empty() && (error.back() == '\n' || error.back() == ' ')) error.pop_back();
+        if (error.empty() && !binary) error = draft_reason(bytes);
         return fail(std::string(binary ? "not a valid .glb" : "not a valid glTF file") + (error.empty() ? "" : ": " + error));
     }
     return model;

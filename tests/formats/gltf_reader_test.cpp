@@ -159,6 +159,10 @@ TEST_CASE("gltf: hostile files are refused with what and where, never read out o
         glb.json["skins"][0]["joints"] = {0, 1, 2, 3, 4};
         CHECK_THAT(refusal(glb.bytes()), Catch::Contains("not a whole humanoid") || Catch::Contains("JOINTS_0"));
     }
+    SECTION("a skin from glTF 2.0's draft (jointNames)") {
+        const std::string draft = R"({"asset": {"version": "2.0"}, "nodes": [{"jointName": "torso_joint_1"}], "skins": [{"jointNames": ["torso_joint_1"]}]})";
+        CHECK_THAT(refusal(std::vector<std::uint8_t>(draft.begin(), draft.end())), Catch::Contains("skin 0 lists \"jointNames\" instead of \"joints\""));
+    }
     SECTION("a node that is its own ancestor") {
         Glb glb(good);
         glb.json["nodes"][3]["children"] = {1};
