@@ -238,8 +238,14 @@ BodyMap detect_body_map_by_structure(const Skeleton& skeleton) {
     const double shoulders = 0.5 * (rest.y(arms[0].upper_arm) + rest.y(arms[1].upper_arm));
     std::size_t head_at = spine_chain.size() - 1;
     const double top_bone = (rest.at[std::size_t(spine_chain[head_at])] - rest.at[std::size_t(spine_chain[head_at - 1])]).norm();
+    // A top joint that carries the head above it (an End Site reaching up a tenth of the body: a skinned mesh's
+    // head over a robot's or a chibi's long head bone) is the head itself.
+    double above_top = 0.0;
+    for (const EndSite& site : skeleton.end_sites) {
+        if (site.joint == spine_chain[head_at]) above_top = std::max(above_top, site.offset_in_joint.y());
+    }
     if (head_at >= 2 && rest.children[std::size_t(spine_chain[head_at])].empty() && top_bone >= 0.08 * h &&
-        rest.y(spine_chain[head_at - 1]) > shoulders) {
+        rest.y(spine_chain[head_at - 1]) > shoulders && above_top < 0.1 * h) {
         --head_at;
     }
     const int head = spine_chain[head_at];

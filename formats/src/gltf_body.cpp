@@ -44,6 +44,10 @@ Built build(const SkinJoints& joints, const RigJoints& rig) {
         built.skeleton.parents.push_back(parent);
         built.skeleton.rest_offsets.push_back(joints.positions[std::size_t(k)] - parent_position);
     }
+    for (int j = 0; j < built.skeleton.joint_count(); ++j) { // End Sites on the leaves that move mesh
+        const Eigen::Vector3d& tip = joints.tips[std::size_t(built.skin_of_skeleton[std::size_t(j)])];
+        if (tip.squaredNorm() > 0.0 && built.skeleton.children(j).empty()) built.skeleton.end_sites.push_back({j, tip});
+    }
     return built;
 }
 

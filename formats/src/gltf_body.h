@@ -23,6 +23,7 @@ struct SkinJoints {
     std::vector<std::string> names;
     std::vector<Eigen::Matrix4d> rest;       // rest world transforms
     std::vector<Eigen::Vector3d> positions;  // their translations
+    std::vector<Eigen::Vector3d> tips;       // the farthest rest point of the mesh each moves most, from it (zero: none)
 };
 
 struct BodySkeleton {

@@ -101,26 +101,19 @@ BvhLayout rotation_layout(int joints) {
 }
 
 // glTF skeletons end at their last joints; BVH ones carry End Sites (the head's top, the toes' tips) that the
-// standing height and the viewer's capsules use. A leaf joint gets one at the farthest point of the body it moves
-// most (identity rest rotations: a world vector is the offset in the joint's frame).
-void add_end_sites_from_mesh(Skeleton& skeleton, const SkinnedMesh& mesh) {
-    const std::vector<Eigen::Vector3d> world = rest_model_positions(skeleton);
-    std::vector<double> farthest(skeleton.joint_count(), 0.0);
-    std::vector<Eigen::Vector3d> tip(skeleton.joint_count(), Eigen::Vector3d::Zero());
+// standing height, the viewer's capsules and the structural body map use. Each skin joint's tip is the farthest
+// rest point of the mesh it moves most (a world vector from the joint: identity rest rotations); the skeleton
+// gives one to each leaf joint that moves mesh (gltf_body.cpp).
+void mesh_tips(SkinJoints& joints, const SkinnedMesh& mesh, const std::vector<Eigen::Matrix4d>& inverse_binds) {
+    std::vector<double> farthest(joints.positions.size(), 0.0);
+    joints.tips.assign(joints.positions.size(), Eigen::Vector3d::Zero());
     for (std::size_t v = 0; v < mesh.vertex_count(); ++v) {
         const int k = static_cast<int>(std::max_element(mesh.weights[v].begin(), mesh.weights[v].end()) - mesh.weights[v].begin());
-        const int joint = mesh.joints[v][k];
-        // At rest the skin matrix of a joint is its rest translation times bind_to_rest.
-        const Eigen::Vector4f bound = mesh.bind_to_rest[joint] * mesh.positions[v].homogeneous();
-        const Eigen::Vector3d rest = world[joint] + bound.head<3>().cast<double>();
-        const double distance = (rest - world[joint]).norm();
-        if (distance > farthest[joint]) {
-            farthest[joint] = distance;
-            tip[joint] = rest - world[joint];
-        }
-    }
-    for (int j = 0; j < skeleton.joint_count(); ++j) {
-        if (skeleton.children(j).empty() && farthest[j] > 0.0) skeleton.end_sites.push_back({j, tip[j]});
+        const std::size_t joint = mesh.joints[v][std::size_t(k)];
+        // At rest the skin matrix of a joint is G(rest) * IBM.
+        const Eigen::Vector4d rest = joints.rest[joint] * inverse_binds[joint] * mesh.positions[v].cast<double>().homogeneous();
+        const Eigen::Vector3d tip = rest.head<3>() - joints.positions[joint];
+        if (tip.norm() > farthest[joint]) farthest[joint] = tip.norm(), joints.tips[joint] = tip;
     }
 }
 
@@ -218,6 +211,7 @@ Result<GltfCharacter> gltf_parse(std::span<const std::uint8_t> bytes, std::strin
     for (int k = 0; k < joint_count; ++k) identity[k] = k;
     if (Result<void> read = gltf::read_skinned_primitives(model, identity, result.mesh); !read) return with_source(read.error());
     if (result.mesh.triangles.empty()) return with_source(fail("no triangles are skinned by skin 0"));
+    mesh_tips(joints, result.mesh, *inverse_binds);
     std::vector<double> weights(joint_count, 0.0);
     for (std::size_t v = 0; v < result.mesh.vertex_count(); ++v) {
         for (int i = 0; i < 4; ++i) weights[result.mesh.joints[v][i]] += result.mesh.weights[v][i];
@@ -258,7 +252,6 @@ Result<GltfCharacter> gltf_parse(std::span<const std::uint8_t> bytes, std::strin
     for (std::array<std::uint16_t, 4>& ids : result.mesh.joints) {
         for (std::uint16_t& id : ids) id = static_cast<std::uint16_t>(std::max(body.skeleton_of_skin[id], 0)); // left-out joints weigh nothing
     }
-    add_end_sites_from_mesh(skeleton, result.mesh);
     result.character.height_m = standing_height(clip, result.character.body_map).height;
     if (!(result.character.height_m >= 0.3 && result.character.height_m <= 5.0)) {
         return with_source(fail("the skeleton stands " + std::to_string(result.character.height_m) + " m tall; a character is 0.3 to 5 m (glTF lengths are metres)"));

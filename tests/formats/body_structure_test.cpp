@@ -34,9 +34,6 @@ std::string differences(const Skeleton& skeleton, const BodyMap& named, bool mis
     std::string text;
     for (BodyPart part : k_compared) {
         if (named.joint(part) == found.joint(part) || (!missing_counts && found.joint(part) < 0)) continue;
-        // A long head bone (a robot's, gdbot's) reads to the structure as the skull's top: it takes the joint below
-        // for the head. detect_body_map lets the names decide that one; so does this test.
-        if (part == BodyPart::head && named.has(part) && found.has(part) && skeleton.parents[std::size_t(named.joint(part))] == found.joint(part)) continue;
         auto name = [&](int j) { return j >= 0 ? skeleton.names[std::size_t(j)] : std::string("-"); };
         text += std::string(body_part_name(part)) + ": names " + name(named.joint(part)) + ", structure " + name(found.joint(part)) + "; ";
     }
