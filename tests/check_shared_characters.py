@@ -93,18 +93,24 @@ def main():
                 print(f"  retarget {os.path.basename(args.capture)}: {report['frames']} frames, bones {report['bone_length_error_m']:.1e} m,"
                       f" planted feet drift up to {report['foot_drift_m'] * 1000:.1f} mm, limb extension error {report['limb_extension_error']:.3f}"
                       f" {'ok' if ok else 'FAIL'}")
+            # A bout: orders once the fighter has had time to close in on the still 1.65 m user (a chibi walks
+            # slowly). The punch must land; whether a kick reaches that user's head or chest depends on the legs.
             script, stem = os.path.join(work, "orders.txt"), os.path.join(work, f"{name}_bout")
-            open(script, "w").write("0.5 punch right\n2.5 kick right\n")
+            open(script, "w").write("3.0 punch right\n6.0 kick right\n")
             subprocess.run([args.kumite, "play", args.database, "--headless", "--character", character, "--tracker", "simulate:still",
-                            "--commands", "script:" + script, "--duration", "5", "--record", stem + ".glb", "--report", stem + ".json"],
-                           check=True, stdout=subprocess.DEVNULL)
+                            "--commands", "script:" + script, "--duration", "9", "--record", stem + ".glb", "--report", stem + ".json",
+                            "--events", stem + ".jsonl"], check=True, stdout=subprocess.DEVNULL)
             report = json.load(open(stem + ".json"))
-            # Hits depend on whether the character reaches a 1.65 m user's head or chest at all (a chibi does not).
-            strikes, hits = report["strikes"], report["hits"]
-            ok = strikes == 2 and report["joint_limit_violations"] == 0
+            outcomes = {}
+            for line in open(stem + ".jsonl"):
+                event = json.loads(line)
+                if "contact_error_m" in event and "command" in event:
+                    outcomes[event["command"]] = f"{event['contact_error_m'] * 1000:.0f} mm from the {event.get('target_part', 'head')}"
+            ok = report["strikes"] == 2 and report["hits"] >= 1 and report["joint_limit_violations"] == 0 and "punch" in outcomes
             checked += 1
             failures += not ok
-            print(f"  bout: {report['frames']} frames, {strikes} strikes, {hits} hits {'ok' if ok else 'FAIL'}")
+            print(f"  bout: {report['frames']} frames, {report['strikes']} strikes, {report['hits']} hits (punch {outcomes.get('punch', '-')},"
+                  f" kick {outcomes.get('kick', '-')}) {'ok' if ok else 'FAIL'}")
     print(f"{checked} checks on {len(files)} third-party characters, {failures} failed")
     return 1 if failures or checked == 0 else 0
 
