@@ -118,31 +118,33 @@ std::uint32_t AccessorReader::index_value(std::size_t element) const {
     }
 }
 
-Result<std::vector<Eigen::Matrix4d>> inverse_bind_matrices(const tinygltf::Model& model, const tinygltf::Skin& skin) {
+Result<std::vector<Eigen::Matrix4d>> inverse_bind_matrices(const tinygltf::Model& model, int skin_index) {
+    const tinygltf::Skin& skin = model.skins[std::size_t(skin_index)];
+    const std::string name = "skin " + std::to_string(skin_index);
     std::vector<Eigen::Matrix4d> matrices(skin.joints.size(), Eigen::Matrix4d::Identity());
     if (skin.inverseBindMatrices < 0) return matrices;
-    Result<AccessorReader> reader = AccessorReader::open(model, skin.inverseBindMatrices, "skin 0 inverse bind matrices");
+    Result<AccessorReader> reader = AccessorReader::open(model, skin.inverseBindMatrices, name + " inverse bind matrices");
     if (!reader) return reader.error();
     if (reader->components() != 16 || reader->count() < skin.joints.size()) {
-        return fail("skin 0 inverse bind matrices: accessor " + std::to_string(skin.inverseBindMatrices) + " holds " + std::to_string(reader->count()) +
+        return fail(name + " inverse bind matrices: accessor " + std::to_string(skin.inverseBindMatrices) + " holds " + std::to_string(reader->count()) +
                     " elements of " + std::to_string(reader->components()) + " numbers, not one 4x4 matrix per joint");
     }
     for (std::size_t k = 0; k < matrices.size(); ++k) {
         for (int c = 0; c < 16; ++c) {
             const double v = reader->value(k, c);
-            if (!std::isfinite(v)) return fail("skin 0 inverse bind matrix " + std::to_string(k) + " holds a number that is not finite");
+            if (!std::isfinite(v)) return fail(name + " inverse bind matrix " + std::to_string(k) + " holds a number that is not finite");
             matrices[k](c % 4, c / 4) = v;
         }
     }
     return matrices;
 }
 
-Result<void> read_skinned_primitives(const tinygltf::Model& model, const std::vector<int>& skeleton_of_skin, SkinnedMesh& mesh) {
+Result<void> read_skinned_primitives(const tinygltf::Model& model, int skin_index, const std::vector<int>& skeleton_of_skin, SkinnedMesh& mesh) {
     bool colour_set = false;
     const int joints = static_cast<int>(skeleton_of_skin.size());
     for (std::size_t n = 0; n < model.nodes.size(); ++n) {
         const tinygltf::Node& node = model.nodes[n];
-        if (node.skin != 0 || node.mesh < 0) continue;
+        if (node.skin != skin_index || node.mesh < 0) continue;
         if (node.mesh >= static_cast<int>(model.meshes.size())) return fail("node " + std::to_string(n) + ": mesh " + std::to_string(node.mesh) + " does not exist");
         const tinygltf::Mesh& source = model.meshes[node.mesh];
         for (std::size_t p = 0; p < source.primitives.size(); ++p) {

@@ -43,10 +43,10 @@ private:
 };
 
 // The skin's inverse bind matrices (identity when the skin has none), checked finite.
-Result<std::vector<Eigen::Matrix4d>> inverse_bind_matrices(const tinygltf::Model& model, const tinygltf::Skin& skin);
+Result<std::vector<Eigen::Matrix4d>> inverse_bind_matrices(const tinygltf::Model& model, int skin_index);
 
-// Appends every triangle primitive of every mesh node using skin 0 to `mesh`, in bind space (joints mapped
+// Appends every triangle primitive of every mesh node using skin `skin_index` to `mesh`, in bind space (joints mapped
 // through `skeleton_of_skin`, weights renormalised, the material's base colour kept from the first primitive).
-Result<void> read_skinned_primitives(const tinygltf::Model& model, const std::vector<int>& skeleton_of_skin, SkinnedMesh& mesh);
+Result<void> read_skinned_primitives(const tinygltf::Model& model, int skin_index, const std::vector<int>& skeleton_of_skin, SkinnedMesh& mesh);
 
 } // namespace kumite::gltf

@@ -117,15 +117,41 @@ void mesh_tips(SkinJoints& joints, const SkinnedMesh& mesh, const std::vector<Ei
     }
 }
 
+// A skin whose bind matrices differ from the joints' (its mesh bound in another pose, or placed otherwise): its
+// vertices [first_vertex, end) are moved into the common bind space, where the joints' bind matrices put them at
+// their rest place (G * IBM is one matrix M for every joint at rest, rest_pose makes sure: v' = M^-1 * sum w G IBM_skin v).
+void to_common_bind(SkinnedMesh& mesh, std::size_t first_vertex, const SkinJoints& joints, const std::vector<Eigen::Matrix4d>& binds,
+                    const std::vector<int>& joint_of_skin, const std::vector<Eigen::Matrix4d>& skin_binds) {
+    std::vector<Eigen::Matrix4d> skin_bind_of_joint(binds);
+    bool same = true;
+    for (std::size_t k = 0; k < joint_of_skin.size(); ++k) {
+        skin_bind_of_joint[std::size_t(joint_of_skin[k])] = skin_binds[k];
+        same = same && (skin_binds[k] - binds[std::size_t(joint_of_skin[k])]).cwiseAbs().maxCoeff() <= 1e-6 * std::max(1.0, binds[std::size_t(joint_of_skin[k])].cwiseAbs().maxCoeff());
+    }
+    if (same || binds.empty()) return;
+    const Eigen::Matrix4d common_inverse = (joints.rest[0] * binds[0]).inverse();
+    for (std::size_t v = first_vertex; v < mesh.vertex_count(); ++v) {
+        Eigen::Matrix4d blend = Eigen::Matrix4d::Zero();
+        for (int i = 0; i < 4; ++i) {
+            const std::size_t j = mesh.joints[v][std::size_t(i)];
+            blend += double(mesh.weights[v][std::size_t(i)]) * joints.rest[j] * skin_bind_of_joint[j];
+        }
+        const Eigen::Matrix4d to_common = common_inverse * blend;
+        mesh.positions[v] = (to_common * mesh.positions[v].cast<double>().homogeneous()).head<3>().cast<float>();
+        const Eigen::Vector3d normal = to_common.block<3, 3>(0, 0) * mesh.normals[v].cast<double>();
+        if (normal.norm() > 1e-12) mesh.normals[v] = normal.normalized().cast<float>();
+    }
+}
+
 // The rest pose of each skin joint as world transforms: the nodes' own when the mesh was bound in it (every
 // joint's G * IBM is one matrix: identity, or an armature's scale and turn); else the bind pose the inverse bind
 // matrices hold, G = M * IBM^-1 with M the skinned mesh node's world transform (a file saved in an animation's
 // pose), said in a warning.
-std::vector<Eigen::Matrix4d> rest_pose(const tinygltf::Model& model, const tinygltf::Skin& skin, const std::vector<Eigen::Matrix4d>& worlds,
-                                       const std::vector<Eigen::Matrix4d>& inverse_binds, std::vector<std::string>& warnings) {
+std::vector<Eigen::Matrix4d> rest_pose(const tinygltf::Model& model, const std::vector<int>& joint_nodes, const std::vector<Eigen::Matrix4d>& worlds,
+                                       const std::vector<Eigen::Matrix4d>& inverse_binds, bool bound, std::vector<std::string>& warnings) {
     std::vector<Eigen::Matrix4d> nodes;
-    for (int node : skin.joints) nodes.push_back(worlds[std::size_t(node)]);
-    if (skin.inverseBindMatrices < 0) return nodes; // no bind pose but the nodes'
+    for (int node : joint_nodes) nodes.push_back(worlds[std::size_t(node)]);
+    if (!bound) return nodes; // no bind pose but the nodes'
     const Eigen::Matrix4d first = nodes[0] * inverse_binds[0];
     const double tolerance = 1e-3 * std::max(1.0, first.cwiseAbs().maxCoeff());
     double worst = 0.0;
@@ -133,7 +159,7 @@ std::vector<Eigen::Matrix4d> rest_pose(const tinygltf::Model& model, const tinyg
     if (worst <= tolerance) return nodes;
     Eigen::Matrix4d mesh_world = Eigen::Matrix4d::Identity();
     for (std::size_t n = 0; n < model.nodes.size(); ++n) {
-        if (model.nodes[n].skin == 0 && model.nodes[n].mesh >= 0) {
+        if (model.nodes[n].skin >= 0 && model.nodes[n].mesh >= 0) {
             mesh_world = worlds[n];
             break;
         }
@@ -142,7 +168,7 @@ std::vector<Eigen::Matrix4d> rest_pose(const tinygltf::Model& model, const tinyg
     for (std::size_t k = 0; k < nodes.size(); ++k) {
         const double determinant = inverse_binds[k].determinant();
         if (!(std::abs(determinant) > 1e-12)) {
-            warnings.push_back("skin 0's inverse bind matrix " + std::to_string(k) + " cannot be inverted; the rest pose is the nodes' own");
+            warnings.push_back("joint " + std::to_string(k) + "'s inverse bind matrix cannot be inverted; the rest pose is the nodes' own");
             return nodes;
         }
         bind[k] = mesh_world * inverse_binds[k].inverse();
@@ -169,49 +195,72 @@ Result<GltfCharacter> gltf_parse(std::span<const std::uint8_t> bytes, std::strin
     const tinygltf::Model& model = *loaded;
 
     if (model.skins.empty()) return with_source(fail("no skin: a character needs a skinned mesh with its skeleton's joints"));
-    const tinygltf::Skin& skin = model.skins[0];
+    if (model.skins[0].joints.empty()) return with_source(fail("skin 0 has no joints"));
     const int node_count = static_cast<int>(model.nodes.size());
-    if (skin.joints.empty()) return with_source(fail("skin 0 has no joints"));
-    if (skin.joints.size() > std::size_t(k_gltf_max_joints)) {
-        return with_source(fail("skin 0 claims " + std::to_string(skin.joints.size()) + " joints, more than the " + std::to_string(k_gltf_max_joints) + " a character may have"));
-    }
     std::vector<int> node_parents;
     Result<std::vector<Eigen::Matrix4d>> worlds = node_worlds(model, node_parents);
     if (!worlds) return with_source(worlds.error());
 
-    const int joint_count = static_cast<int>(skin.joints.size());
-    std::vector<int> joint_of_node(node_count, -1);
-    for (int k = 0; k < joint_count; ++k) {
-        const int node = skin.joints[k];
-        if (node < 0 || node >= node_count) return with_source(fail("skin 0: joint " + std::to_string(k) + " is node " + std::to_string(node) + ", not a node"));
-        if (joint_of_node[node] >= 0) return with_source(fail("skin 0: node " + std::to_string(node) + " is listed twice as a joint"));
-        joint_of_node[node] = k;
+    // Every skin's joints, skin 0's first: a file may give each mesh its own skin (a VRM's face, body and hair, a
+    // pack's body parts), over the same joints or some of them. A joint's bind matrix is the first skin's.
+    std::vector<int> joint_nodes, joint_of_node(node_count, -1);
+    std::vector<Eigen::Matrix4d> binds;
+    std::vector<std::vector<Eigen::Matrix4d>> skin_binds(model.skins.size());
+    std::vector<std::vector<int>> joint_of_skin(model.skins.size());
+    bool bound = true;
+    for (std::size_t s = 0; s < model.skins.size(); ++s) {
+        const tinygltf::Skin& skin = model.skins[s];
+        const std::string name = "skin " + std::to_string(s);
+        if (skin.joints.size() > std::size_t(k_gltf_max_joints)) {
+            return with_source(fail(name + " claims " + std::to_string(skin.joints.size()) + " joints, more than the " + std::to_string(k_gltf_max_joints) + " a character may have"));
+        }
+        Result<std::vector<Eigen::Matrix4d>> inverse_binds = gltf::inverse_bind_matrices(model, int(s));
+        if (!inverse_binds) return with_source(inverse_binds.error());
+        skin_binds[s] = std::move(*inverse_binds);
+        bound = bound && (skin.joints.empty() || skin.inverseBindMatrices >= 0);
+        std::vector<int> listed;
+        for (std::size_t k = 0; k < skin.joints.size(); ++k) {
+            const int node = skin.joints[k];
+            if (node < 0 || node >= node_count) return with_source(fail(name + ": joint " + std::to_string(k) + " is node " + std::to_string(node) + ", not a node"));
+            if (std::find(listed.begin(), listed.end(), node) != listed.end()) return with_source(fail(name + ": node " + std::to_string(node) + " is listed twice as a joint"));
+            listed.push_back(node);
+            if (joint_of_node[node] < 0) {
+                if (joint_nodes.size() == std::size_t(k_gltf_max_joints)) {
+                    return with_source(fail("the skins hold more than the " + std::to_string(k_gltf_max_joints) + " joints a character may have"));
+                }
+                joint_of_node[node] = int(joint_nodes.size());
+                joint_nodes.push_back(node);
+                binds.push_back(skin_binds[s][k]);
+            }
+            joint_of_skin[s].push_back(joint_of_node[node]);
+        }
     }
+    const int joint_count = static_cast<int>(joint_nodes.size());
     SkinJoints joints;
     joints.parent.resize(joint_count, -1);
     joints.node_depth.resize(joint_count, 0);
     for (int k = 0; k < joint_count; ++k) {
-        const int node = skin.joints[k];
+        const int node = joint_nodes[std::size_t(k)];
         for (int at = node_parents[node]; at >= 0; at = node_parents[at]) {
             if (joints.parent[k] < 0 && joint_of_node[at] >= 0) joints.parent[k] = joint_of_node[at];
             ++joints.node_depth[k];
         }
         joints.names.push_back(model.nodes[node].name.empty() ? "joint" + std::to_string(node) : model.nodes[node].name);
     }
-    Result<std::vector<Eigen::Matrix4d>> inverse_binds = gltf::inverse_bind_matrices(model, skin);
-    if (!inverse_binds) return with_source(inverse_binds.error());
     GltfCharacter result;
     result.node_count = node_count;
     std::vector<std::string>& warnings = result.character.warnings;
-    joints.rest = rest_pose(model, skin, *worlds, *inverse_binds, warnings);
+    joints.rest = rest_pose(model, joint_nodes, *worlds, binds, bound, warnings);
     for (const Eigen::Matrix4d& rest : joints.rest) joints.positions.push_back(rest.block<3, 1>(0, 3));
 
-    // The mesh first, on skin joint indices, for the weights that tell the body from the controls.
-    std::vector<int> identity(joint_count);
-    for (int k = 0; k < joint_count; ++k) identity[k] = k;
-    if (Result<void> read = gltf::read_skinned_primitives(model, identity, result.mesh); !read) return with_source(read.error());
-    if (result.mesh.triangles.empty()) return with_source(fail("no triangles are skinned by skin 0"));
-    mesh_tips(joints, result.mesh, *inverse_binds);
+    // The mesh first, on joint indices, for the weights that tell the body from the controls.
+    for (std::size_t s = 0; s < model.skins.size(); ++s) {
+        const std::size_t first_vertex = result.mesh.vertex_count();
+        if (Result<void> read = gltf::read_skinned_primitives(model, int(s), joint_of_skin[s], result.mesh); !read) return with_source(read.error());
+        to_common_bind(result.mesh, first_vertex, joints, binds, joint_of_skin[s], skin_binds[s]);
+    }
+    if (result.mesh.triangles.empty()) return with_source(fail("no triangles are skinned by the file's skins"));
+    mesh_tips(joints, result.mesh, binds);
     std::vector<double> weights(joint_count, 0.0);
     for (std::size_t v = 0; v < result.mesh.vertex_count(); ++v) {
         for (int i = 0; i < 4; ++i) weights[result.mesh.joints[v][i]] += result.mesh.weights[v][i];
@@ -219,7 +268,7 @@ Result<GltfCharacter> gltf_parse(std::span<const std::uint8_t> bytes, std::strin
 
     const std::optional<gltf::VrmHumanoid> vrm = gltf::vrm_humanoid(model);
     if (vrm) warnings.insert(warnings.end(), vrm->warnings.begin(), vrm->warnings.end());
-    BodySkeleton body = body_skeleton(joints, weights, vrm ? &*vrm : nullptr, skin.joints);
+    BodySkeleton body = body_skeleton(joints, weights, vrm ? &*vrm : nullptr, joint_nodes);
     warnings.insert(warnings.end(), body.warnings.begin(), body.warnings.end());
     Skeleton& skeleton = result.character.clip.skeleton;
     skeleton = std::move(body.skeleton);
@@ -247,7 +296,7 @@ Result<GltfCharacter> gltf_parse(std::span<const std::uint8_t> bytes, std::strin
         if (j < 0) continue;
         Eigen::Matrix4d rest_inverse = Eigen::Matrix4d::Identity();
         rest_inverse.block<3, 1>(0, 3) = -joints.positions[k];
-        result.mesh.bind_to_rest[j] = (rest_inverse * joints.rest[k] * (*inverse_binds)[k]).cast<float>();
+        result.mesh.bind_to_rest[j] = (rest_inverse * joints.rest[k] * binds[std::size_t(k)]).cast<float>();
     }
     for (std::array<std::uint16_t, 4>& ids : result.mesh.joints) {
         for (std::uint16_t& id : ids) id = static_cast<std::uint16_t>(std::max(body.skeleton_of_skin[id], 0)); // left-out joints weigh nothing

@@ -137,6 +137,47 @@ TEST_CASE("gltf rigs: control rigs, IK rigs and animation-pose saves read as the
             CHECK(rig.character.clip.skeleton.names[std::size_t(rig.character.body_map.joint(part))].find('_') == std::string::npos);
         }
     }
+    SECTION("each mesh its own skin, one bound with other matrices: every mesh read, placed where its skin puts it") {
+        Glb glb(bytes);
+        // A second mesh node on the same mesh with a skin over the same joints whose bind matrices take each vertex
+        // 0.3 m to the right first (IBM * T(-0.3, 0, 0)): the body twice, the copy shifted by -0.3 m in X.
+        nlohmann::json skin = glb.json["skins"][0];
+        const int matrices = skin["inverseBindMatrices"].get<int>();
+        const std::size_t count = glb.json["accessors"][matrices]["count"].get<std::size_t>();
+        std::vector<float> values(count * 16);
+        std::memcpy(values.data(), glb.bin.data() + glb.offset_of(matrices, 0, 64), count * 64);
+        Eigen::Matrix4f shift = Eigen::Matrix4f::Identity();
+        shift(0, 3) = -0.3f;
+        for (std::size_t k = 0; k < count; ++k) {
+            Eigen::Map<Eigen::Matrix4f> matrix(values.data() + 16 * k);
+            matrix = Eigen::Matrix4f(matrix) * shift;
+        }
+        const std::size_t offset = glb.bin.size();
+        glb.bin.resize(offset + values.size() * 4);
+        std::memcpy(glb.bin.data() + offset, values.data(), values.size() * 4);
+        glb.json["buffers"][0]["byteLength"] = glb.bin.size();
+        glb.json["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", values.size() * 4}});
+        glb.json["accessors"].push_back({{"bufferView", glb.json["bufferViews"].size() - 1}, {"componentType", 5126}, {"count", count}, {"type", "MAT4"}});
+        skin["inverseBindMatrices"] = glb.json["accessors"].size() - 1;
+        glb.json["skins"].push_back(skin);
+        int mesh_node = -1;
+        for (std::size_t n = 0; n < glb.json["nodes"].size(); ++n) {
+            if (glb.json["nodes"][n].contains("skin")) mesh_node = int(n);
+        }
+        REQUIRE(mesh_node >= 0);
+        const int copy = glb.add_node("body_copy", glb.parent_of(mesh_node), glb.local(mesh_node));
+        glb.json["nodes"][copy]["mesh"] = glb.json["nodes"][mesh_node]["mesh"];
+        glb.json["nodes"][copy]["skin"] = 1;
+        const GltfCharacter twice = read(glb);
+        CHECK(twice.character.clip.skeleton.joint_count() == original.character.clip.skeleton.joint_count());
+        REQUIRE(twice.mesh.vertex_count() == 2 * original.mesh.vertex_count());
+        double worst = 0.0;
+        for (std::size_t v = 0; v < original.mesh.vertex_count(); ++v) {
+            const Eigen::Vector3f moved = twice.mesh.positions[original.mesh.vertex_count() + v] - twice.mesh.positions[v];
+            worst = std::max(worst, double((moved - Eigen::Vector3f(-0.3f, 0.0f, 0.0f)).norm()));
+        }
+        CHECK(worst < 1e-4);
+    }
     SECTION("a file saved in an animation's pose: the rest pose from the inverse bind matrices") {
         Glb glb(bytes);
         for (const char* bone : {"mixamorig:LeftForeArm", "mixamorig:RightUpLeg", "mixamorig:Spine1"}) {

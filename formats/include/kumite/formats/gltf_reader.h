@@ -3,7 +3,7 @@
 // skinned mesh to draw it with. Read with tinygltf (Debian's libtinygltf-dev, compiled into this library without
 // image decoding: only geometry, skin and base colour are used).
 //
-// The skeleton: the joints of the file's first skin that make the body, each parented to its nearest ancestor
+// The skeleton: the joints of the file's skins (skin 0's first) that make the body, each parented to its nearest ancestor
 // that is a joint too (one root); control joints (IK targets, IK/FK copies) are left out and IK rigs' detached feet
 // attached back to their legs, with warnings in `character.warnings` (src/gltf_rig.h). Its rest pose is the nodes'
 // own transforms (TRS or matrix) through the whole node tree, so a scale (a Mixamo armature at 0.01) or an axis
@@ -12,7 +12,7 @@
 // as the BVH reader gives. The clip has one frame, the rest pose. The body map comes from a VRM humanoid bone map,
 // the joint names (Mixamo, Unreal, Blender/Rigify, VRM/VRoid among others) and the skeleton's structure.
 //
-// The mesh (kumite/core/skinned_mesh.h): every triangle primitive skinned by that skin, positions and normals in
+// The mesh (kumite/core/skinned_mesh.h): every triangle primitive skinned by any skin, positions and normals in
 // bind space, up to 4 joints and weights per vertex (renormalised; indices into the skeleton), the material's
 // base colour, and bind_to_rest from the inverse bind matrices.
 //
