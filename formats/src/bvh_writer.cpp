@@ -20,7 +20,9 @@ void append_number(std::string& out, double value) {
     out.append(buffer, end);
 }
 
-void write_hierarchy(std::string& out, const Skeleton& skeleton, const BvhLayout& layout, double to_unit) {
+// Writes the HIERARCHY and returns the joints in the order it wrote them: the order the MOTION lines must follow.
+// A skeleton's indices are parents-first, not necessarily depth-first (a glTF character's are by depth).
+std::vector<int> write_hierarchy(std::string& out, const Skeleton& skeleton, const BvhLayout& layout, double to_unit) {
     // Children in index order, End Sites after a joint's children; depth-first with an explicit stack.
     std::vector<std::vector<int>> children(skeleton.joint_count());
     for (int joint = 1; joint < skeleton.joint_count(); ++joint) children[skeleton.parents[joint]].push_back(joint);
@@ -37,6 +39,8 @@ void write_hierarchy(std::string& out, const Skeleton& skeleton, const BvhLayout
     };
 
     out += "HIERARCHY\n";
+    std::vector<int> written;
+    written.reserve(std::size_t(skeleton.joint_count()));
     struct Item { int joint; int depth; bool closing; };
     std::vector<Item> stack{{0, 0, false}};
     while (!stack.empty()) {
@@ -53,6 +57,7 @@ void write_hierarchy(std::string& out, const Skeleton& skeleton, const BvhLayout
             out += indent + "}\n";
             continue;
         }
+        written.push_back(item.joint);
         out += indent + (item.joint == 0 ? "ROOT " : "JOINT ") + skeleton.names[item.joint] + "\n" + indent + "{\n";
         write_offset(skeleton.rest_offsets[item.joint], item.depth + 1);
         const BvhJointChannels& channels = layout.joints[item.joint];
@@ -64,6 +69,7 @@ void write_hierarchy(std::string& out, const Skeleton& skeleton, const BvhLayout
             stack.push_back({*child, item.depth + 1, false});
         }
     }
+    return written;
 }
 
 } // namespace
@@ -88,7 +94,7 @@ std::string bvh_write_string(const Clip& clip, const BvhLayout& layout, const Le
     const double to_unit = 1.0 / unit.metres;
     std::string out;
     out.reserve(static_cast<std::size_t>(clip.frame_count()) * layout.channel_count() * 11 + 4096);
-    write_hierarchy(out, skeleton, layout, to_unit);
+    const std::vector<int> written = write_hierarchy(out, skeleton, layout, to_unit);
 
     out += "MOTION\nFrames: " + std::to_string(clip.frame_count()) + "\nFrame Time: ";
     char frame_time[32];
@@ -99,7 +105,7 @@ std::string bvh_write_string(const Clip& clip, const BvhLayout& layout, const Le
     for (int frame = 0; frame < clip.frame_count(); ++frame) {
         const PoseView pose = clip.pose(frame);
         bool first_value = true;
-        for (int joint = 0; joint < skeleton.joint_count(); ++joint) {
+        for (const int joint : written) {
             const BvhJointChannels& channels = layout.joints[joint];
             const Eigen::Vector3d translation = joint == 0 ? pose.root_translation
                                                 : clip.has_local_translations() ? pose.local_translations[joint]

@@ -137,3 +137,37 @@ TEST_CASE("bvh_writer: every shared capture round-trips to 1e-6 of its height", 
         check_round_trip(*file, path.string());
     }
 }
+
+TEST_CASE("bvh_writer: a skeleton indexed breadth-first (a glTF character's) writes its motion in the hierarchy's order", "[formats]") {
+    // root -> a -> a2 and root -> b -> b2, indexed by depth: root, a, b, a2, b2. The file lists them depth-first
+    // (root, a, a2, b, b2); each joint's channel values must follow it there.
+    Clip clip;
+    clip.skeleton.names = {"root", "a", "b", "a2", "b2"};
+    clip.skeleton.parents = {-1, 0, 0, 1, 2};
+    clip.skeleton.rest_offsets = {Eigen::Vector3d::Zero(), Eigen::Vector3d(0.2, 0, 0), Eigen::Vector3d(-0.2, 0, 0), Eigen::Vector3d(0, -0.5, 0),
+                                  Eigen::Vector3d(0, -0.4, 0.1)};
+    clip.frame_time_s = 1.0 / 30.0;
+    for (int frame = 0; frame < 3; ++frame) {
+        clip.root_translations.push_back(Eigen::Vector3d(0.1 * frame, 1.0, 0.0));
+        for (int joint = 0; joint < 5; ++joint) {
+            clip.local_rotations.push_back(Eigen::Quaterniond(Eigen::AngleAxisd(0.2 + 0.3 * joint + 0.1 * frame, Eigen::Vector3d(1, joint, 2).normalized())));
+        }
+    }
+    const std::string text = bvh_write_string(clip, bvh_default_layout(clip), LengthUnit{"m", 1.0});
+    BvhReadOptions options;
+    options.unit = LengthUnit{"m", 1.0};
+    Result<BvhFile> again = bvh_parse(text, "breadth_first.bvh", options);
+    REQUIRE(again.has_value());
+    REQUIRE(again->clip.skeleton.names == std::vector<std::string>{"root", "a", "a2", "b", "b2"});
+    std::vector<Eigen::Vector3d> written(5), read(5);
+    std::vector<Eigen::Quaterniond> written_rotations(5), read_rotations(5);
+    for (int frame = 0; frame < 3; ++frame) {
+        forward_kinematics(written, written_rotations, clip.skeleton, clip.pose(frame));
+        forward_kinematics(read, read_rotations, again->clip.skeleton, again->clip.pose(frame));
+        for (int joint = 0; joint < 5; ++joint) {
+            const int same = *again->clip.skeleton.find(clip.skeleton.names[std::size_t(joint)]);
+            INFO("frame " << frame << " joint " << clip.skeleton.names[std::size_t(joint)]);
+            CHECK((read[std::size_t(same)] - written[std::size_t(joint)]).norm() < 1e-8);
+        }
+    }
+}
