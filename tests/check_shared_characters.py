@@ -3,7 +3,7 @@
 exports scaled 100, .gltf + .bin without neck or clavicles, a file saved in an animation pose): each one is read,
 a right punch and a right kick at targets inside its reach (from its own rest skeleton) land within --tolerance
 with bones exact and the support foot planted, the `--record OUT.glb` recording shows the effector on the target in
-Blender's importer, and a short bout against a still user plays and hits. Exit 77 (skipped) without the folder or
+Blender's importer and the `--record OUT.bvh` one read back by kumite, and a short bout against a still user plays and hits. Exit 77 (skipped) without the folder or
 Blender.
 
 usage: check_shared_characters.py --kumite KUMITE (--database DB.kdb | --annotations A.json --mocap-root DIR)
@@ -70,16 +70,22 @@ def main():
                                check=True, stdout=subprocess.DEVNULL)
                 report = json.load(open(stem + ".json"))
                 frame = report["contact_frame"]
+                # The same strike recorded as BVH, read back by kumite: the effector where the .glb has it.
+                subprocess.run([args.kumite, "adapt", args.database, "--character", character, "--target", ",".join(f"{v:.4f}" for v in target),
+                                "--command", command, "--side", "right", "--record", stem + ".bvh"], check=True, stdout=subprocess.DEVNULL)
+                positions = kumite_json(args.kumite, "positions", stem + ".bvh", "--frames", str(frame))
+                bvh_error = distance(positions["frames"][str(frame)][positions["joint_names"].index(report["effector"])], target)
                 blender = blender_import(stem + ".glb", stem + ".blender.json", [frame])
                 seen = blender["posed"][str(frame)][report["effector"]]
                 error = distance(seen, target)
                 skinned = any(m["skinned"] and m["polygons"] > 0 for m in blender["meshes"])
                 ok = (report["reachable"] and report["contact_error_m"] <= args.tolerance and error <= args.tolerance and skinned
+                      and bvh_error <= args.tolerance
                       and report["bone_length_error_m"] < 1e-6 and report["foot_drift_m"] < 1e-3 and report["joint_limit_violations"] == 0)
                 checked += 1
                 failures += not ok
                 print(f"  {command} right at {[round(v, 3) for v in target]}: {report['effector']} {report['contact_error_m'] * 1000:.3f} mm from"
-                      f" the target (Blender: {error * 1000:.3f} mm), bones {report['bone_length_error_m']:.1e} m, foot drift"
+                      f" the target (Blender: {error * 1000:.3f} mm, BVH: {bvh_error * 1000:.3f} mm), bones {report['bone_length_error_m']:.1e} m, foot drift"
                       f" {report['foot_drift_m']:.1e} m, {report['joint_limit_violations']} violations, skinned {'yes' if skinned else 'NO'}"
                       f" {'ok' if ok else 'FAIL'}")
             if args.capture:

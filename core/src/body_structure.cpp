@@ -230,7 +230,17 @@ BodyMap detect_body_map_by_structure(const Skeleton& skeleton) {
             best_out = out;
         }
     }
-    if (arms[0].hand < 0 || arms[1].hand < 0) return map;
+    if (arms[0].hand < 0 || arms[1].hand < 0) {
+        // Armless to the structure (one bone per arm, no wrist): the legs and the trunk's ends still say what the
+        // body has, so a refusal can name only what is missing.
+        map.set(BodyPart::pelvis, pelvis, BodyMapSource::structure);
+        map.set(BodyPart::head, spine_chain.back(), BodyMapSource::structure);
+        map.set(BodyPart::thigh_l, left_leg.thigh, BodyMapSource::structure), map.set(BodyPart::shin_l, left_leg.shin, BodyMapSource::structure);
+        map.set(BodyPart::foot_l, left_leg.foot, BodyMapSource::structure);
+        map.set(BodyPart::thigh_r, right_leg.thigh, BodyMapSource::structure), map.set(BodyPart::shin_r, right_leg.shin, BodyMapSource::structure);
+        map.set(BodyPart::foot_r, right_leg.foot, BodyMapSource::structure);
+        return map;
+    }
     // head: the top of the spine chain, or the joint before when the top is a long end (8% of the body or more from
     // its parent: the top of the skull, while the head joint sits 4-6% above the neck).
     // Without a neck (chibi rigs) the head hangs long from the chest: the joint before the top must itself be
@@ -258,7 +268,7 @@ BodyMap detect_body_map_by_structure(const Skeleton& skeleton) {
     if (chest != pelvis) map.set(BodyPart::chest, chest);
     const std::size_t chest_at = index_in(spine_chain, chest);
     if (chest_at < spine_chain.size() && chest_at > 0) map.set(BodyPart::spine, spine_chain[0]);
-    if (chest_at < head_at) map.set(BodyPart::neck, spine_chain[chest_at + 1]);
+    if (chest_at + 1 < head_at) map.set(BodyPart::neck, spine_chain[chest_at + 1]); // no neck joint: no neck (not the head twice)
     const BodyPart arm_parts[2][4] = {{BodyPart::clavicle_l, BodyPart::upper_arm_l, BodyPart::forearm_l, BodyPart::hand_l},
                                       {BodyPart::clavicle_r, BodyPart::upper_arm_r, BodyPart::forearm_r, BodyPart::hand_r}};
     for (int side = 0; side < 2; ++side) {
