@@ -73,7 +73,8 @@ def main():
                 # The same strike recorded as BVH, read back by kumite: the effector where the .glb has it.
                 subprocess.run([args.kumite, "adapt", args.database, "--character", character, "--target", ",".join(f"{v:.4f}" for v in target),
                                 "--command", command, "--side", "right", "--record", stem + ".bvh"], check=True, stdout=subprocess.DEVNULL)
-                positions = kumite_json(args.kumite, "positions", stem + ".bvh", "--frames", str(frame))
+                # In metres, as kumite wrote it: BVH has no unit, and a 4.3 m robot's file reads as CMU's unit by height.
+                positions = kumite_json(args.kumite, "positions", stem + ".bvh", "--frames", str(frame), "--unit", "m")
                 bvh_error = distance(positions["frames"][str(frame)][positions["joint_names"].index(report["effector"])], target)
                 blender = blender_import(stem + ".glb", stem + ".blender.json", [frame])
                 seen = blender["posed"][str(frame)][report["effector"]]
