@@ -70,11 +70,11 @@ BakedClip bake_clip(const RawAnnotatedClip& annotation, bool mirrored, const Bak
     record.side = static_cast<std::uint32_t>(side);
     record.kind = static_cast<std::uint8_t>(annotation.kind);     // a mirror is the same kind at the same height
     record.height = static_cast<std::uint8_t>(annotation.height);
-    int hit_joint = -1;
+    ContactPoint contact;
     if (annotation.segment) {
         const BodyPart segment = mirrored ? body_part_mirrored(*annotation.segment) : *annotation.segment;
         record.segment = static_cast<std::int32_t>(segment);
-        hit_joint = anatomy.body_map.joint(segment);
+        contact = contact_point_of(annotation.semantics, segment, anatomy.body_map);
     }
     if (annotation.hit_frame) {
         const double hit_s = (*annotation.hit_frame - annotation.first_frame) * capture.frame_time_s;
@@ -102,7 +102,7 @@ BakedClip bake_clip(const RawAnnotatedClip& annotation, bool mirrored, const Bak
                             anatomy.body_map, positions);
         ankles[0][frame] = positions[anatomy.limbs[int(Limb::leg_l)].extremity];
         ankles[1][frame] = positions[anatomy.limbs[int(Limb::leg_r)].extremity];
-        if (hit_joint >= 0) hit_points[frame] = positions[hit_joint] - Eigen::Vector3d(0.0, anatomy.floor_y, 0.0);
+        if (contact.valid()) hit_points[frame] = contact.at(positions) - Eigen::Vector3d(0.0, anatomy.floor_y, 0.0);
         headings[frame].origin.y() = 0.0; // stored positions put the capture's floor at y = 0
         DbPose& pose = baked.poses[frame];
         pose.frame = static_cast<std::uint32_t>(frame);

@@ -3,6 +3,7 @@
 #include "capture_loading.h"
 #include "commands.h"
 
+#include "kumite/core/contact_point.h"
 #include "kumite/formats/motion_database_file.h"
 
 #include <chrono>
@@ -20,7 +21,7 @@ const CommandSpec& db_info_spec() {
         "db-info",
         "DB.kdb [--verify] [--json]",
         "Maps and validates a motion database (header, sections, every index and value) and summarises it:\n"
-        "clips, poses, clusters, actors and strikes by semantics and side, and by semantics x kind x height x\n"
+        "clips, poses, clusters, actors and strikes (blocks too) by semantics and side, and by semantics x kind x height x\n"
         "side (the strikes' labels). --verify also checks the content hash. A corrupt, truncated or foreign file exits with status 1 and says what is wrong and where.",
         1, 1,
         {{"verify", "", "also recompute the content hash"}, json_flag()}};
@@ -42,7 +43,7 @@ nlohmann::json summary_json(const MotionDatabase& database, double open_us, bool
     nlohmann::json motions = nlohmann::json::object();
     nlohmann::json kinds = nlohmann::json::object(), heights = nlohmann::json::object();
     std::map<std::tuple<std::string, int, int, std::uint32_t>, int> labels; // semantics, kind, height, side
-    int strikes_captured = 0; // before mirroring
+    int strikes_captured = 0, blocks_captured = 0; // before mirroring
     std::vector<std::uint32_t> strike_actors;
     for (const DbClip& clip : db.clips) {
         const std::string semantics(db.string(clip.semantics));
@@ -55,8 +56,14 @@ nlohmann::json summary_json(const MotionDatabase& database, double open_us, bool
             count_in(kinds, strike_kind_name(clip.strike_kind()));
             count_in(heights, strike_height_name(clip.strike_height()));
             ++labels[{semantics, clip.kind, clip.height, clip.side}];
-            strikes_captured += (clip.flags & db_clip_mirrored) == 0;
-            if (std::find(strike_actors.begin(), strike_actors.end(), clip.actor) == strike_actors.end()) strike_actors.push_back(clip.actor);
+            // Blocks (the defence's moves) are listed with the strikes by side, but not counted among the strikes
+            // the fighter throws.
+            if (semantics_is_block(semantics)) {
+                blocks_captured += (clip.flags & db_clip_mirrored) == 0;
+            } else {
+                strikes_captured += (clip.flags & db_clip_mirrored) == 0;
+                if (std::find(strike_actors.begin(), strike_actors.end(), clip.actor) == strike_actors.end()) strike_actors.push_back(clip.actor);
+            }
             nlohmann::json& counts = strikes[semantics];
             if (counts.is_null()) counts = {{"left", 0}, {"right", 0}};
             counts[side_name(clip.side)] = counts.value(side_name(clip.side), 0) + 1;
@@ -93,6 +100,7 @@ nlohmann::json summary_json(const MotionDatabase& database, double open_us, bool
             {"strikes", strikes},
             {"strikes_before_mirroring", strikes_captured},
             {"strike_actors", strike_actors.size()},
+            {"blocks_before_mirroring", blocks_captured},
             {"kinds", kinds},
             {"heights", heights},
             {"labels", label_list},
@@ -125,6 +133,7 @@ int run_db_info(int argc, char** argv) {
         std::cout << "  " << semantics << ": " << counts["left"] << " left, " << counts["right"] << " right\n";
     }
     std::cout << "  " << summary["strikes_before_mirroring"] << " strikes before mirroring, from " << summary["strike_actors"] << " actors\n";
+    std::cout << "  " << summary["blocks_before_mirroring"] << " blocks before mirroring\n";
     for (const auto& [semantics, count] : summary["motions"].items()) std::cout << "  " << semantics << ": " << count << "\n";
     std::cout << "  strikes by kind, height and side:\n";
     std::string last;

@@ -36,8 +36,8 @@ HitTrajectory hit_trajectory_from(std::vector<Eigen::Vector3d> hit_points, std::
     return trajectory;
 }
 
-HitTrajectory hit_trajectory_compute(const Clip& clip, const RestAnatomy& anatomy, int hit_joint, int first_frame, int hit_frame,
-                                     int last_frame) {
+HitTrajectory hit_trajectory_compute(const Clip& clip, const RestAnatomy& anatomy, const ContactPoint& contact, int first_frame,
+                                     int hit_frame, int last_frame) {
     assert(0 <= first_frame && first_frame <= hit_frame && hit_frame <= last_frame && last_frame < clip.frame_count());
     const Skeleton& skeleton = clip.skeleton;
     std::vector<Eigen::Vector3d> positions(skeleton.joint_count());
@@ -46,7 +46,7 @@ HitTrajectory hit_trajectory_compute(const Clip& clip, const RestAnatomy& anatom
     std::vector<HeadingFrame> headings;
     for (int frame = first_frame; frame <= last_frame; ++frame) {
         forward_kinematics(positions, rotations, skeleton, clip.pose(frame));
-        hit_points.push_back(positions[hit_joint]);
+        hit_points.push_back(contact.at(positions));
         headings.push_back(pose_heading(skeleton, anatomy, positions, rotations));
     }
     return hit_trajectory_from(std::move(hit_points), std::move(headings), hit_frame - first_frame);

@@ -2,6 +2,8 @@
 
 #include "kumite/core/root_from_feet.h"
 
+#include "kumite/core/contact_point.h"
+
 #include "kumite/core/forward_kinematics.h"
 
 #include <algorithm>
@@ -80,6 +82,7 @@ const char* strike_semantics_name(StrikeSemantics semantics) {
     case StrikeSemantics::kick: return "kick";
     case StrikeSemantics::knee: return "knee";
     case StrikeSemantics::elbow: return "elbow";
+    case StrikeSemantics::block: return "block";
     case StrikeSemantics::reach: return "reach";
     }
     return "reach";
@@ -104,6 +107,7 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
     std::vector<std::array<double, k_limb_count>> extension(frames), reach(frames), ahead(frames);
     LimbTrack extremity(frames), middle(frames), root(frames);
     std::vector<double> head_y(frames, 0.0), part_distance(frames, 0.0);
+    std::vector<Eigen::Vector3d> hips_forward(frames, Eigen::Vector3d::UnitZ()); // on the floor plane
     const int pelvis = map.joint(BodyPart::pelvis);
     const int chest = map.joint(BodyPart::chest);
     const int head = map.joint(BodyPart::head);
@@ -143,6 +147,7 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
             root[frame][limb] = positions[chain.root];
         }
         head_y[frame] = positions[head].y();
+        hips_forward[frame] = Eigen::Vector3d(pelvis_forward.x(), 0.0, pelvis_forward.z()).normalized();
         if (part_joint >= 0) part_distance[frame] = (positions[part_joint] - positions[pelvis]).norm() / part_rest_distance;
     }
 
@@ -211,6 +216,55 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
             add(StrikeSemantics::elbow, part, side, hit, lift, 0.5 + 0.5 * std::min(1.0, (lift[peak] - lift[valley(lift, peak, -1, rise_window)] - k_elbow_rise) / 0.5));
         }
     };
+    // Blocks: the forearm's contact point (a third of the way from the wrist to the elbow) sweeps fast across the
+    // body's front and stops there, the arm not thrust out at a target: hit where the sweep stops (after its
+    // fastest frame, the first frame under a fifth of that speed). Rising (age-uke): it stops above the head with the
+    // elbow over the shoulder and the forearm across, not upright. Downward (gedan-barai): the wrist came down at
+    // least 0.15 arm length, fast (3.5 arm lengths per second at its fastest: an arm lowered to rest after a
+    // technique is slower), the arm straight (0.85) and stopping low in front (the wrist 0.6 arm length under its shoulder and 0.25 ahead of it
+    // along the hips' heading: an arm hanging by the side or pulled back to the hip is not out in front).
+    auto detect_blocks = [&](int limb, Side side, BodyPart part) {
+        const LimbChain& chain = anatomy.limbs[limb];
+        const double length = chain.length();
+        std::vector<double> speed(frames, 0.0);
+        std::vector<Eigen::Vector3d> contact(frames);
+        for (int frame = 0; frame < frames; ++frame) {
+            contact[frame] = extremity[frame][limb] + k_block_contact_fraction * (middle[frame][limb] - extremity[frame][limb]);
+        }
+        // Speed over +-0.025 s: one-frame jumps of an inertial suit are not sweeps.
+        const int smooth = std::max(1, static_cast<int>(std::lround(0.025 / dt)));
+        for (int frame = 0; frame < frames; ++frame) {
+            const int from = std::max(0, frame - smooth), to = std::min(frames - 1, frame + smooth);
+            if (to > from) speed[frame] = (contact[to] - contact[from]).norm() / ((to - from) * dt) / length;
+        }
+        const auto peaks = local_maxima(speed, half_window, min_gap, [&](int frame) { return speed[frame] >= 1.5; });
+        for (int peak : peaks) {
+            int hit = peak, start = peak;
+            while (hit + 1 < frames && speed[hit] >= 0.2 * speed[peak]) ++hit;
+            while (start > 0 && peak - start < span && speed[start] >= 0.2 * speed[peak]) --start;
+            const Eigen::Vector3d sweep = (contact[hit] - contact[start]) / length;
+            const Eigen::Vector3d wrist = extremity[hit][limb] - root[hit][limb];
+            const double out = std::hypot(wrist.x(), wrist.z()) / length;
+            const double forearm_tilt = std::abs(extremity[hit][limb].y() - middle[hit][limb].y()) / chain.lower_length;
+            const bool rising = sweep.y() > 0.2 && contact[hit].y() > head_y[hit] && middle[hit][limb].y() > root[hit][limb].y() &&
+                                forearm_tilt < 0.85 && extension[hit][limb] < 0.9;
+            const double wrist_drop = (extremity[hit][limb].y() - extremity[start][limb].y()) / length;
+            // Out in front: the other hand, pulled back to the hip as the block sweeps (hikite), comes down too.
+            const double ahead_of_shoulder = wrist.dot(hips_forward[hit]) / length;
+            const bool downward = wrist_drop < -0.15 && wrist.y() < -0.6 * length && out > 0.3 && ahead_of_shoulder > 0.25 &&
+                                  extension[hit][limb] >= 0.85 && speed[peak] >= 3.5;
+            if (!rising && !downward) continue;
+            if (already_found(strikes, StrikeSemantics::punch, limb_parts(static_cast<Limb>(limb))[2], hit, min_gap)) continue; // a low punch
+            if (already_found(strikes, StrikeSemantics::block, part, hit, min_gap)) continue;
+            // A rising elbow strike lifts the forearm over the head too: the elbow found there is the strike.
+            if (already_found(strikes, StrikeSemantics::elbow, part, hit, 2 * min_gap)) continue;
+            const double strength = rising ? std::min(1.0, (contact[hit].y() - head_y[hit]) / (0.2 * length)) : std::min(1.0, (-wrist_drop - 0.15) / 0.3);
+            add(StrikeSemantics::block, part, side, hit, speed, 0.5 + 0.5 * strength);
+            StrikeSuggestion& block = strikes.back();
+            block.first_frame = std::max(0, start - half_window);
+            block.last_frame = std::min(frames - 1, hit + (hit - start));
+        }
+    };
     for (int limb = 0; limb < k_limb_count; ++limb) {
         const bool arm = limb < 2;
         const Side side = limb % 2 == 0 ? Side::left : Side::right;
@@ -248,6 +302,7 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
                 add(StrikeSemantics::punch, parts[2], side, hit, signal, 0.5 + 0.5 * strength);
             }
             detect_elbow_strikes(limb, side, parts[1]);
+            detect_blocks(limb, side, parts[1]);
             continue;
         }
         // Legs: the ankle raised above its standing height. Straightened at the top (the foot thrust out to a
@@ -292,7 +347,8 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
     const int grab_lead = static_cast<int>(std::lround(0.6 / dt));
     std::vector<StrikeSuggestion> kept;
     for (const StrikeSuggestion& strike : strikes) {
-        const bool arm_strike = strike.semantics == StrikeSemantics::punch || strike.semantics == StrikeSemantics::elbow;
+        const bool arm_strike = strike.semantics == StrikeSemantics::punch || strike.semantics == StrikeSemantics::elbow ||
+                                strike.semantics == StrikeSemantics::block;
         const bool during_leg_strike = arm_strike && std::any_of(strikes.begin(), strikes.end(), [&](const StrikeSuggestion& leg) {
                                            const int from = leg.semantics == StrikeSemantics::knee ? std::min(leg.first_frame, leg.hit_frame - grab_lead)
                                                                                                    : leg.first_frame;

@@ -1,5 +1,6 @@
 #include "kumite/core/strike_labels.h"
 
+#include "kumite/core/contact_point.h"
 #include "kumite/core/forward_kinematics.h"
 
 #include <algorithm>
@@ -10,7 +11,7 @@
 namespace kumite {
 namespace {
 
-constexpr std::array<const char*, k_strike_kind_count> k_kind_names = {"none", "straight", "hook", "uppercut", "front", "roundhouse", "side", "other"};
+constexpr std::array<const char*, k_strike_kind_count> k_kind_names = {"none", "straight", "hook", "uppercut", "front", "roundhouse", "side", "other", "rising", "downward", "inward", "outward"};
 constexpr std::array<const char*, k_strike_height_count> k_height_names = {"none", "low", "middle", "high"};
 constexpr double k_approach_fraction = 0.4;
 constexpr double k_min_approach_s = 0.2; // a strike found late in its rise still shows its course
@@ -38,6 +39,9 @@ bool strike_kind_fits(std::string_view semantics, StrikeKind kind) {
     if (kind == StrikeKind::none || kind == StrikeKind::other) return true;
     if (semantics == "punch") return kind == StrikeKind::straight || kind == StrikeKind::hook || kind == StrikeKind::uppercut;
     if (semantics == "kick") return kind == StrikeKind::front || kind == StrikeKind::roundhouse || kind == StrikeKind::side;
+    if (semantics_is_block(semantics)) {
+        return kind == StrikeKind::rising || kind == StrikeKind::downward || kind == StrikeKind::inward || kind == StrikeKind::outward;
+    }
     return false;
 }
 
@@ -61,9 +65,9 @@ StrikeLabels strike_labels_propose(const Clip& clip, const RestAnatomy& anatomy,
                                    int first_frame, int hit_frame) {
     StrikeLabels labels;
     const BodyMap& map = anatomy.body_map;
-    const int joint = map.joint(segment);
+    const ContactPoint contact = contact_point_of(semantics, segment, map);
     const int pelvis = map.joint(BodyPart::pelvis);
-    if (joint < 0 || pelvis < 0 || clip.frame_count() == 0) return labels;
+    if (!contact.valid() || pelvis < 0 || clip.frame_count() == 0) return labels;
     hit_frame = std::clamp(hit_frame, 0, clip.frame_count() - 1);
     first_frame = std::clamp(first_frame, 0, hit_frame);
     const Skeleton& skeleton = clip.skeleton;
@@ -78,10 +82,11 @@ StrikeLabels strike_labels_propose(const Clip& clip, const RestAnatomy& anatomy,
     const int approach_frames = std::max({2, static_cast<int>(std::lround(k_approach_fraction * (hit_frame - first_frame))),
                                           clip.has_frame_rate() ? static_cast<int>(std::lround(k_min_approach_s / clip.frame_time_s)) : 2});
     forward_kinematics(positions, rotations, skeleton, clip.pose(std::max(0, hit_frame - approach_frames)));
-    const Eigen::Vector3d approach_start = positions[joint];
+    const Eigen::Vector3d approach_start = contact.at(positions);
     forward_kinematics(positions, rotations, skeleton, clip.pose(hit_frame));
-    const Eigen::Vector3d approach = positions[joint] - approach_start;
-    Eigen::Vector3d line = positions[joint] - positions[root];
+    const Eigen::Vector3d hit_point = contact.at(positions);
+    const Eigen::Vector3d approach = hit_point - approach_start;
+    Eigen::Vector3d line = hit_point - positions[root];
     line.y() = 0.0;
     line = line.norm() > 1e-9 ? line.normalized() : Eigen::Vector3d::UnitZ();
     Eigen::Vector3d facing = (rotations[pelvis] * anatomy.rest_frames[pelvis]) * Eigen::Vector3d::UnitZ();
@@ -95,7 +100,7 @@ StrikeLabels strike_labels_propose(const Clip& clip, const RestAnatomy& anatomy,
     const StrikeHeightThresholds thresholds = strike_height_thresholds(anatomy);
     labels.hip_height_m = thresholds.hip_m;
     labels.shoulder_height_m = thresholds.shoulder_m;
-    labels.hit_height_m = positions[joint].y() - anatomy.floor_y;
+    labels.hit_height_m = hit_point.y() - anatomy.floor_y;
     labels.height = strike_height_of(labels.hit_height_m, thresholds);
 
     const double along = labels.approach_along_m, sideways = labels.approach_sideways_m, up = labels.approach_up_m;
@@ -107,6 +112,13 @@ StrikeLabels strike_labels_propose(const Clip& clip, const RestAnatomy& anatomy,
         if (sideways > along) labels.kind = StrikeKind::roundhouse;
         else if (labels.hips_to_line_deg > 55.0) labels.kind = StrikeKind::side;
         else labels.kind = StrikeKind::front;
+    } else if (semantics_is_block(semantics)) {
+        // Sideways relative to the body (the hips' facing), signed: out to the blocking arm's side is positive.
+        const Eigen::Vector3d out_side = Eigen::Vector3d::UnitY().cross(facing) * (left ? 1.0 : -1.0); // +X of a heading is its left
+        const double outward = approach.dot(out_side);
+        if (up > 0.0 && labels.hit_height_m > labels.shoulder_height_m) labels.kind = StrikeKind::rising;
+        else if (up < 0.0 && labels.hit_height_m < 0.5 * (labels.hip_height_m + labels.shoulder_height_m)) labels.kind = StrikeKind::downward;
+        else labels.kind = outward > 0.0 ? StrikeKind::outward : StrikeKind::inward;
     } else {
         labels.kind = StrikeKind::other;
     }

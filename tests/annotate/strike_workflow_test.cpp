@@ -77,7 +77,7 @@ TEST_CASE("strike workflow: the trajectory passes through the hit joint and the 
     const RawAnnotatedClip& clip = document.clip(1);
     const LoadedCapture* capture = document.capture_of(1);
     REQUIRE(capture);
-    Result<ClipTrajectory> trajectory = clip_trajectory_compute(*capture, *clip.segment, clip.first_frame, *clip.hit_frame, clip.last_frame);
+    Result<ClipTrajectory> trajectory = clip_trajectory_compute(*capture, clip.semantics, *clip.segment, clip.first_frame, *clip.hit_frame, clip.last_frame);
     REQUIRE(trajectory);
     REQUIRE(int(trajectory->points_world.size()) == clip.last_frame - clip.first_frame + 1);
 
@@ -102,7 +102,7 @@ TEST_CASE("strike workflow: the trajectory passes through the hit joint and the 
             CHECK(along <= 1.0 + 1e-6);
         }
     }
-    CHECK_FALSE(clip_trajectory_compute(*capture, BodyPart::foot_r, 50, 40, 60)); // hit before the in point
+    CHECK_FALSE(clip_trajectory_compute(*capture, "kick", BodyPart::foot_r, 50, 40, 60)); // hit before the in point
 }
 
 TEST_CASE("strike workflow: the saved file bakes with `kumite bake`, the window's bake gives the same database", "[annotate]") {

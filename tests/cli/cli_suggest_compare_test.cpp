@@ -22,7 +22,7 @@ TEST_CASE("cli: suggest --compare scores the detection on whole captures per fol
     const std::string reference = (kumite::test::source_dir() / "data/annotations/reference.json").string();
     std::string files;
     for (const char* name : {"s1_empi_left_sample0.bvh", "s2_hiza_geri_right_sample3.bvh", "s1_mae_geri_right_sample4.bvh",
-                             "s2_yoko_geri_left_sample1.bvh", "s1_age_uke_right_sample2.bvh", "s2_gedan_barai_left_sample5.bvh"}) {
+                             "s2_yoko_geri_left_sample1.bvh", "s1_age_uke_right_sample2.bvh", "s1_gedan_barai_right_sample0.bvh"}) {
         files += " " + (folder / name).string();
     }
     const auto scored = run_command(kumite_exe() + " suggest" + files + " --compare " + reference + " --mocap-root " +
@@ -32,13 +32,14 @@ TEST_CASE("cli: suggest --compare scores the detection on whole captures per fol
     const nlohmann::json report = nlohmann::json::parse(scored.out);
     const nlohmann::json& shorinryu = report["folders"]["hachaj-shorinryu"];
     CHECK(shorinryu["files"] == 6);
-    CHECK(shorinryu["annotated"] == 4); // the blocks hold no strike
-    CHECK(shorinryu["matched"] == 4);
-    CHECK(shorinryu["proposed"] == 4);
+    CHECK(shorinryu["annotated"] == 6); // four strikes and two blocks
+    CHECK(shorinryu["matched"] == 6);
+    CHECK(shorinryu["proposed"] == 6);
     CHECK(shorinryu["recall"].get<double>() == Approx(1.0));
     CHECK(shorinryu["precision"].get<double>() == Approx(1.0));
     CHECK(shorinryu["semantics_confusion"]["elbow"]["elbow"] == 1);
     CHECK(shorinryu["semantics_confusion"]["knee"]["knee"] == 1);
+    CHECK(shorinryu["semantics_confusion"]["block"]["block"] == 2);
     CHECK(report["files"].size() == 6);
 
     // Against an annotation file that lacks the elbow strike, the same proposal is an extra: precision drops.
@@ -55,7 +56,7 @@ TEST_CASE("cli: suggest --compare scores the detection on whole captures per fol
     REQUIRE(without.status == 0);
     const nlohmann::json without_report = nlohmann::json::parse(without.out);
     const nlohmann::json& less = without_report["folders"]["hachaj-shorinryu"];
-    CHECK(less["annotated"] == 3);
-    CHECK(less["precision"].get<double>() == Approx(0.75));
+    CHECK(less["annotated"] == 5);
+    CHECK(less["precision"].get<double>() == Approx(5.0 / 6.0));
     CHECK(less["semantics_confusion"]["none"]["elbow"] == 1);
 }

@@ -23,7 +23,7 @@ TEST_CASE("hit_trajectory: a right kick rises in front of its start poses, insid
     Result<RestAnatomy> anatomy = rest_anatomy_build(file->clip, file->body_map);
     REQUIRE(anatomy.has_value());
     const int foot = file->body_map.joint(BodyPart::foot_r);
-    const HitTrajectory trajectory = hit_trajectory_compute(file->clip, *anatomy, foot, 30, 60, 87);
+    const HitTrajectory trajectory = hit_trajectory_compute(file->clip, *anatomy, ContactPoint{foot}, 30, 60, 87);
     REQUIRE(trajectory.hit_frame == 30);
     REQUIRE(trajectory.hit_points.size() == 58);
     REQUIRE(trajectory.start_boxes.size() == 30);

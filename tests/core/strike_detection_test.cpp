@@ -133,7 +133,7 @@ TEST_CASE("strike_labels: names, kinds per semantics and the height thresholds",
     CHECK(strike_height_of(1.6, thresholds) == StrikeHeight::high);
 }
 
-TEST_CASE("strike_detection: karate techniques one per file: kicks, knees and elbows found on their side, blocks not taken for strikes",
+TEST_CASE("strike_detection: karate techniques one per file: kicks, knees, elbows and blocks found on their side, blocks not taken for strikes",
           "[core][corpus]") {
     const std::filesystem::path folder = kumite::test::mocap_root() / "hachaj-shorinryu";
     if (!std::filesystem::exists(folder)) {
@@ -141,7 +141,7 @@ TEST_CASE("strike_detection: karate techniques one per file: kicks, knees and el
         return;
     }
     struct Tally {
-        int files = 0, found = 0, extra = 0;
+        int files = 0, found = 0, extra = 0, kinds_agree = 0;
     };
     std::map<std::string, Tally> tallies;
     BvhReadOptions at_100; // the files say 'Frame Time: 0'; the same author's captures are at 100 fps
@@ -156,17 +156,21 @@ TEST_CASE("strike_detection: karate techniques one per file: kicks, knees and el
         Result<RestAnatomy> anatomy = rest_anatomy_build(file->clip, file->body_map);
         REQUIRE(anatomy.has_value());
         const std::vector<StrikeSuggestion> strikes = strikes_detect(file->clip, *anatomy);
+        const bool is_block = technique == "age_uke" || technique == "gedan_barai";
         const StrikeSemantics expected = technique == "hiza_geri" ? StrikeSemantics::knee
                                          : technique == "empi"    ? StrikeSemantics::elbow
+                                         : is_block               ? StrikeSemantics::block
                                                                   : StrikeSemantics::kick;
-        const bool is_block = technique == "age_uke" || technique == "gedan_barai";
+        const StrikeKind expected_block = technique == "age_uke" ? StrikeKind::rising : StrikeKind::downward;
         Tally& tally = tallies[technique];
         ++tally.files;
         int matched = 0;
         for (const StrikeSuggestion& strike : strikes) {
-            const bool right = !is_block && strike.semantics == expected && strike.side == side;
+            const bool right = strike.semantics == expected && strike.side == side;
             matched += right;
-            tally.extra += !right;
+            // Some series-2 gedan-barai files open with a block of the other arm: a block still, not a strike.
+            tally.extra += !right && !(is_block && strike.semantics == StrikeSemantics::block);
+            if (right && is_block) tally.kinds_agree += strike.labels.kind == expected_block;
         }
         tally.found += matched > 0;
     }
@@ -174,6 +178,8 @@ TEST_CASE("strike_detection: karate techniques one per file: kicks, knees and el
         INFO(technique << ": " << tally.found << " of " << tally.files << " found, " << tally.extra << " other proposals");
         if (technique == "age_uke" || technique == "gedan_barai") {
             CHECK(tally.extra == 0); // no block proposed as a strike
+            CHECK(tally.found >= tally.files * 3 / 4); // measured: age-uke 40 of 40, gedan-barai 31 of 40
+            CHECK(tally.kinds_agree >= tally.found * 9 / 10);
         } else {
             CHECK(tally.found >= tally.files * 9 / 10);
             CHECK(tally.extra <= tally.files / 10);

@@ -2,11 +2,11 @@
 
 namespace kumite::annotate {
 
-Result<ClipTrajectory> clip_trajectory_compute(const LoadedCapture& capture, BodyPart segment, int first_frame, int hit_frame,
-                                               int last_frame) {
+Result<ClipTrajectory> clip_trajectory_compute(const LoadedCapture& capture, std::string_view semantics, BodyPart segment,
+                                               int first_frame, int hit_frame, int last_frame) {
     if (!capture.anatomy) return make_error(ErrorCode::invalid, capture.anatomy_error);
-    const int hit_joint = capture.file.body_map.joint(segment);
-    if (hit_joint < 0) {
+    const ContactPoint contact = contact_point_of(semantics, segment, capture.file.body_map);
+    if (!contact.valid()) {
         return make_error(ErrorCode::invalid, capture.source + ": no joint plays " + std::string(body_part_name(segment)));
     }
     const int frame_count = capture.file.clip.frame_count();
@@ -16,7 +16,7 @@ Result<ClipTrajectory> clip_trajectory_compute(const LoadedCapture& capture, Bod
                                                   std::to_string(frame_count) + " do not hold");
     }
     const HitTrajectory trajectory =
-        hit_trajectory_compute(capture.file.clip, *capture.anatomy, hit_joint, first_frame, hit_frame, last_frame);
+        hit_trajectory_compute(capture.file.clip, *capture.anatomy, contact, first_frame, hit_frame, last_frame);
 
     ClipTrajectory result;
     result.points_world = trajectory.hit_points;

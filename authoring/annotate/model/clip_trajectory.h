@@ -13,7 +13,7 @@
 namespace kumite::annotate {
 
 struct ClipTrajectory {
-    std::vector<Eigen::Vector3d> points_world;         // [frame - first_frame] the hit joint
+    std::vector<Eigen::Vector3d> points_world;         // [frame - first_frame] the contact point
     int hit_index = 0;                                 // hit_frame - first_frame
     Eigen::Vector3d contact_world = Eigen::Vector3d::Zero();
     std::array<Eigen::Vector3d, 8> box_corners_world{}; // corner k: x from bit 0, y from bit 1, z from bit 2 (min/max)
@@ -21,8 +21,9 @@ struct ClipTrajectory {
     AlignedBox box_in_heading;                         // union over every start (what the bake stores per clip)
 };
 
-// Fails when the capture has no anatomy, the segment no joint, or the frames are out of order or range.
-Result<ClipTrajectory> clip_trajectory_compute(const LoadedCapture& capture, BodyPart segment, int first_frame, int hit_frame,
-                                               int last_frame);
+// The path of the contact point of a clip of `semantics` (contact_point.h: a joint, or a block's forearm). Fails
+// when the capture has no anatomy, the segment no joint, or the frames are out of order or range.
+Result<ClipTrajectory> clip_trajectory_compute(const LoadedCapture& capture, std::string_view semantics, BodyPart segment,
+                                               int first_frame, int hit_frame, int last_frame);
 
 } // namespace kumite::annotate

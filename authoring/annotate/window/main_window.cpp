@@ -6,6 +6,8 @@
 #include "issues_panel.h"
 #include "scene_builder.h"
 #include "scene_view.h"
+
+#include "kumite/core/contact_point.h"
 #include "timeline_panel.h"
 
 #include <QAction>
@@ -172,12 +174,13 @@ void MainWindow::refresh_scene(bool frame_camera) {
     if (const int selected = m_document->selected_clip(); selected >= 0) {
         const RawAnnotatedClip& clip = m_document->clip(selected);
         highlight = clip.segment;
-        if (clip.segment && clip.hit_frame) strike = StrikeOnShow{*clip.segment, clip.first_frame, *clip.hit_frame, clip.last_frame, false};
+        if (clip.segment && clip.hit_frame) strike = StrikeOnShow{*clip.segment, clip.first_frame, *clip.hit_frame, clip.last_frame, false, semantics_is_block(clip.semantics)};
     } else if (const std::optional<int> preview = m_timeline->previewed_suggestion();
                preview && *preview < int(capture->suggestions.size())) {
         const StrikeSuggestion& proposal = capture->suggestions[size_t(*preview)];
         highlight = proposal.segment;
-        strike = StrikeOnShow{proposal.segment, proposal.first_frame, proposal.hit_frame, proposal.last_frame, true};
+        strike = StrikeOnShow{proposal.segment, proposal.first_frame, proposal.hit_frame, proposal.last_frame, true,
+                              proposal.semantics == StrikeSemantics::block};
     }
     const Result<ClipTrajectory>* trajectory = strike ? &m_trajectories->get(*capture, *strike) : nullptr;
     const bool drawable = trajectory && trajectory->has_value();

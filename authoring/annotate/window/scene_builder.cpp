@@ -70,7 +70,8 @@ std::optional<BodyPart> scene_part_of_pick(const LoadedCapture& capture, int pic
 
 const Result<ClipTrajectory>& TrajectoryCache::get(const LoadedCapture& capture, const StrikeOnShow& strike) {
     if (!m_trajectory || m_capture_path != capture.path || m_strike != strike) {
-        m_trajectory.emplace(clip_trajectory_compute(capture, strike.segment, strike.first_frame, strike.hit_frame, strike.last_frame));
+        m_trajectory.emplace(clip_trajectory_compute(capture, strike.block ? "block" : "strike", strike.segment, strike.first_frame, strike.hit_frame,
+                                                     strike.last_frame));
         m_capture_path = capture.path;
         m_strike = strike;
     }

@@ -19,6 +19,7 @@ struct StrikeOnShow {
     int hit_frame = 0;
     int last_frame = 0;
     bool proposal = false; // a suggestion not accepted yet: drawn in other colours
+    bool block = false;    // a block: its path is the forearm's contact point (contact_point.h), not a joint's
 
     bool operator==(const StrikeOnShow&) const = default;
 };

@@ -3,6 +3,7 @@
 // strike could start from (in that pose's heading frame), and the axis-aligned box that holds all of it. The
 // retrieval keeps a clip only when the target falls in (or near) its box.
 
+#include "kumite/core/contact_point.h"
 #include "kumite/core/heading_frame.h"
 #include "kumite/core/rest_anatomy.h"
 
@@ -42,10 +43,10 @@ struct HitTrajectory {
 // Fills the boxes from the points and headings (same length, hit_frame inside).
 HitTrajectory hit_trajectory_from(std::vector<Eigen::Vector3d> hit_points, std::vector<HeadingFrame> headings, int hit_frame);
 
-// From a clip: forward kinematics over frames first..last, `hit_joint` the hit segment's joint; frames in the
-// result count from `first_frame`.
-HitTrajectory hit_trajectory_compute(const Clip& clip, const RestAnatomy& anatomy, int hit_joint, int first_frame, int hit_frame,
-                                     int last_frame);
+// From a clip: forward kinematics over frames first..last, `contact` the point that hits (contact_point.h); frames
+// in the result count from `first_frame`.
+HitTrajectory hit_trajectory_compute(const Clip& clip, const RestAnatomy& anatomy, const ContactPoint& contact, int first_frame,
+                                     int hit_frame, int last_frame);
 
 // The heading frame of a pose of this skeleton (pelvis on the floor, facing the hips' forward).
 HeadingFrame pose_heading(const Skeleton& skeleton, const RestAnatomy& anatomy, std::span<const Eigen::Vector3d> model_positions,

@@ -17,6 +17,8 @@
 // - knee: a raised ankle whose leg stays folded (below 0.85) with the knee 0.3 leg length above its standing
 //   height; the hit frame is the knee's highest point. Arm peaks from 0.6 s before a knee strike to its end are
 //   the hands pulling the opponent's head onto it, not punches;
+// - block: see detect_blocks in strike_detection.cpp (a rising or downward sweep of the forearm that stops in front
+//   of the body, not thrust out at a target);
 // - reach (any part asked for by name): peaks of the part's distance from the pelvis, relative to its rest
 //   distance, that stand 0.1 above the valleys on both sides.
 // Peaks closer than 0.3 s keep the stronger. A strike spans from the extension valley before the hit to the one
@@ -32,7 +34,7 @@
 
 namespace kumite {
 
-enum class StrikeSemantics { punch, kick, knee, elbow, reach };
+enum class StrikeSemantics { punch, kick, knee, elbow, block, reach };
 
 struct StrikeSuggestion {
     StrikeSemantics semantics = StrikeSemantics::punch;

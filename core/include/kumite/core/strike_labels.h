@@ -4,7 +4,10 @@
 //
 // Kinds. Punches: straight (jab or cross: the fist travels forward), hook (it sweeps across, towards the body's
 // midline), uppercut (it rises). Kicks: front (the foot rises forward), roundhouse (it sweeps round the body,
-// across the front), side (it extends sideways, out to the kicking leg's side). `other` for strikes that are
+// across the front), side (it extends sideways, out to the kicking leg's side). Blocks (the defence's moves, whose
+// contact point is the forearm, contact_point.h): rising (the forearm sweeps up over the head), downward (down
+// across the front of the hips), inward (across the body towards the midline), outward (from the midline out to the
+// blocking arm's side). `other` for strikes that are
 // none of these (a slash); `none` means unlabelled (old annotation files, non-strikes).
 //
 // Heights, from the hit point (the hit segment's joint at the hit frame) above the floor, relative to the actor
@@ -20,6 +23,9 @@
 //   than along the line (the fist sweeps round, the arm bent); else straight (the arm extends along the line).
 // - kick: roundhouse when the foot moves sideways more than along the line; side when the line is more than 55
 //   degrees from where the hips face at the hit (the body turned side-on); else front.
+// - block: rising when the forearm ends above the shoulder having risen; downward when it ends below halfway from
+//   hip to shoulder having come down; else inward or outward by the sideways motion's sign relative to
+//   the blocking arm's side.
 // - any other semantics: other.
 
 #include "kumite/core/body_map.h"
@@ -31,8 +37,8 @@
 
 namespace kumite {
 
-enum class StrikeKind : std::uint8_t { none = 0, straight, hook, uppercut, front, roundhouse, side, other };
-inline constexpr int k_strike_kind_count = 8;
+enum class StrikeKind : std::uint8_t { none = 0, straight, hook, uppercut, front, roundhouse, side, other, rising, downward, inward, outward };
+inline constexpr int k_strike_kind_count = 12;
 enum class StrikeHeight : std::uint8_t { none = 0, low, middle, high };
 inline constexpr int k_strike_height_count = 4;
 
@@ -41,7 +47,7 @@ const char* strike_height_name(StrikeHeight height);
 std::optional<StrikeKind> strike_kind_from_name(std::string_view name);
 std::optional<StrikeHeight> strike_height_from_name(std::string_view name);
 // The kinds that belong to a semantics: punch -> straight, hook, uppercut, other; kick -> front, roundhouse, side,
-// other; anything else -> other.
+// other; block -> rising, downward, inward, outward, other; anything else -> other.
 bool strike_kind_fits(std::string_view semantics, StrikeKind kind);
 
 struct StrikeLabels {
