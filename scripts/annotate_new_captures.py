@@ -9,9 +9,12 @@ kumite suggest's rules (suggest is measured against these labels) and every clip
 sheets. Where the eye disagreed with a rule the clip is fixed in FIXES / EXCLUDED below, with the reason.
 
 - hachaj-shorinryu: one technique per file, the technique and the side are in the file name (mae_geri = front
-  kick, yoko_geri = side kick, hiza_geri = knee strike, empi = elbow strike; age_uke and gedan_barai are blocks
-  and stay out). Hit frame: kicks at the foot's greatest horizontal reach from its hip while raised (full
-  extension); knees at the knee's highest point; elbows at the elbow's greatest horizontal reach from the chest.
+  kick, yoko_geri = side kick, hiza_geri = knee strike, empi = elbow strike, age_uke = rising block, gedan_barai =
+  downward block). Hit frame: kicks at the foot's greatest horizontal reach from its hip while raised (full
+  extension); knees at the knee's highest point; elbows at the elbow's greatest horizontal reach from the chest;
+  blocks (semantics `block`, segment the forearm, contact point a third of the way from the wrist to the elbow)
+  where the contact point's rise (age-uke) or fall (gedan-barai) stops: after the fastest frame of the move, the
+  first whose rise or fall is under a fifth of that.
 - hachaj-kata: kicks where a foot rises above half the leg length and reaches out while the other foot stands
   (the kata's front and side kicks); punches where the wrist reaches out in front of the chest, below the head, with the arm near straight
   after a fast move (the kata's oi-zuki and gyaku-zuki); blocks (wrist above the head or below the hip) stay out.
@@ -186,10 +189,23 @@ TECHNIQUES = {"mae_geri": ("kick", "front"), "yoko_geri": ("kick", "side"), "hiz
 
 def shorinryu(cap):
     name = os.path.basename(cap.source)
-    technique = next((t for t in TECHNIQUES if f"_{t}_" in name), None)
-    if technique is None:
-        return []  # age_uke, gedan_barai: blocks
     side = "left" if "_left_" in name else "right"
+    for technique, kind in (("age_uke", "rising"), ("gedan_barai", "downward")):
+        if f"_{technique}_" in name:
+            blocks = [shorinryu_block(cap, side, kind)]
+            # Some series-2 gedan-barai files open with one of the other arm (the performer comes in with it): kept
+            # when that arm's contact falls 10 cm or more to below the chest and ends in front, 0.3 s or more before.
+            other = "right" if side == "left" else "left"
+            extra = shorinryu_block(cap, other, kind)
+            if kind == "downward" and extra["hit_frame"] < blocks[0]["hit_frame"] - 0.3 * cap.fps:
+                o = sfx(other)
+                contact = block_contact(cap, o)
+                fall = contact[max(0, extra["hit_frame"] - int(0.3 * cap.fps)):extra["hit_frame"] + 1, 1].max() - contact[extra["hit_frame"], 1]
+                ahead = (cap.j("hand_" + o)[extra["hit_frame"]] - cap.j("upper_arm_" + o)[extra["hit_frame"]]) @ cap.facing(extra["hit_frame"])
+                if fall >= 0.10 and contact[extra["hit_frame"], 1] - cap.floor < cap.hip_m + 0.5 * (cap.shoulder_m - cap.hip_m) and ahead > 0.25 * cap.arm:
+                    blocks.insert(0, extra)
+            return blocks
+    technique = next((t for t in TECHNIQUES if f"_{t}_" in name), None)
     semantics, kind = TECHNIQUES[technique]
     s = sfx(side)
     if semantics == "kick":
@@ -212,6 +228,31 @@ def shorinryu(cap):
     while hit < top and rise[hit + 1] >= 0.2 * rise[fastest]:
         hit += 1
     return [clip(cap, semantics, "forearm_" + s, side, hit, kind)]
+
+
+def block_contact(cap, s):
+    """The forearm's contact point: a third of the way from the wrist to the elbow (core/contact_point.h)."""
+    wrist, elbow = cap.j("hand_" + s), cap.j("forearm_" + s)
+    return wrist + (elbow - wrist) / 3.0
+
+
+def shorinryu_block(cap, side, kind):
+    s = sfx(side)
+    height = block_contact(cap, s)[:, 1]
+    # Smoothed over 5 frames (the suit's single-frame jumps), signed so that the block's move is positive.
+    move = np.convolve(np.diff(height, prepend=height[0]), np.ones(5) / 5.0, mode="same") * (1.0 if kind == "rising" else -1.0)
+    fastest = int(np.argmax(move))
+    hit = fastest
+    while hit + 1 < cap.frames and move[hit + 1] >= 0.2 * move[fastest]:
+        hit += 1
+    c = clip(cap, "block", "forearm_" + s, side, hit, kind)
+    c["height"] = block_height(cap, s, hit)
+    return c
+
+
+def block_height(cap, s, hit):
+    h = block_contact(cap, s)[hit, 1] - cap.floor
+    return "low" if h < cap.hip_m else "high" if h > cap.shoulder_m else "middle"
 
 
 # --- whole kata and shadow boxing: find the strikes ---------------------------------------------------------
@@ -402,9 +443,10 @@ def contact_sheet(clips, captures, path, title):
                     pa, pb = cap.j(a)[hit], cap.j(b)[hit]
                     x, y = view(np.array([pa, pb]))
                     ax.plot(x, y, color="k" if not a.endswith(seg[-2:]) else "tab:blue", lw=1)
-            path_xy = view(cap.j(seg)[c["first"]:c["last"] + 1])
+            track = block_contact(cap, seg[-1]) if c["semantics"] == "block" else cap.j(seg)
+            path_xy = view(track[c["first"]:c["last"] + 1])
             ax.plot(*path_xy, color="tab:red", lw=0.8)
-            hx, hy = view(cap.j(seg)[hit])
+            hx, hy = view(track[hit])
             ax.plot([hx], [hy], "o", color="tab:red", ms=3)
             ax.set_aspect("equal")
             if row == 0:
@@ -473,6 +515,7 @@ def main():
         groups = {"shorinryu-kicks": lambda c: c["source"].startswith("hachaj-shorinryu") and c["semantics"] == "kick",
                   "shorinryu-knees": lambda c: c["source"].startswith("hachaj-shorinryu") and c["semantics"] == "knee",
                   "shorinryu-elbows": lambda c: c["source"].startswith("hachaj-shorinryu") and c["semantics"] == "elbow",
+                  "shorinryu-blocks": lambda c: c["source"].startswith("hachaj-shorinryu") and c["semantics"] == "block",
                   "kata": lambda c: c["source"].startswith("hachaj-kata"),
                   "boxing": lambda c: c["source"].startswith("cmu14-boxing")}
         every = [c for folder in FOLDERS for c in new_clips[folder]]
@@ -480,7 +523,8 @@ def main():
             chosen = [c for c in every if keep(c)]
             if chosen:
                 contact_sheet(chosen, captures, os.path.join(args.sheets, name + ".png"),
-                              f"{name}: the hit frame, seen across the strike line (above) and from above (below); red: the striking joint's path")
+                              f"{name}: the hit frame, seen across the strike line (above) and from above (below); red: the striking "
+                              "joint's path (blocks: the forearm's contact point)")
 
 
 if __name__ == "__main__":
