@@ -71,7 +71,8 @@ std::optional<double> json_number(const nlohmann::json* object, std::initializer
 struct FighterCounts {
     long long orders = 0, queued = 0, performed = 0, refused = 0, expired = 0;
     long long strikes = 0, hits = 0;
-    long long user_strikes = 0, blocked = 0, slipped = 0, landed = 0, missed = 0, unfinished = 0, unseen = 0, blocks = 0, slips = 0;
+    long long user_strikes = 0, blocked = 0, slipped = 0, landed = 0, missed = 0, unfinished = 0, unseen = 0, blocks = 0, slips = 0,
+              block_clips = 0;
     long long losses = 0;
     double lost_s = 0.0;
 };
@@ -95,6 +96,7 @@ FighterCounts count(const FighterLog& fighter, double duration_s) {
         c.unseen += !strike.detected;
         c.slips += strike.move == "slip";
         c.blocks += strike.move == "block" || strike.move == "block_clip" || strike.move == "synthesized";
+        c.block_clips += strike.move == "block_clip";
     }
     c.losses = static_cast<long long>(fighter.tracker_losses.size());
     for (const TrackerLoss& loss : fighter.tracker_losses) c.lost_s += (loss.back_s >= 0.0 ? loss.back_s : duration_s) - loss.lost_s;
@@ -137,6 +139,7 @@ std::string user_table(const FighterCounts& c) {
            (c.unfinished ? count_row("not ended when the events did", c.unfinished, "n-unfinished") : std::string()) +
            count_row("defended of those that would land", defended, "n-defended", defended + c.landed) +
            count_row("not seen coming", c.unseen, "n-unseen") + count_row("defences: blocks", c.blocks, "n-blocks") +
+           count_row("of those, captured blocks", c.block_clips, "n-block-clips", c.blocks) +
            count_row("defences: slips", c.slips, "n-slips") + "</table>";
 }
 

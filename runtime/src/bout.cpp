@@ -200,7 +200,8 @@ void Bout::step(double t_s) {
                 break;
             case FighterEvent::Type::user_strike:
                 ++m_counters.user_strikes;
-                m_counters.blocks += event.user_strike.move == DefenceMove::block;
+                m_counters.blocks += is_block(event.user_strike.move);
+                m_counters.block_clips += event.user_strike.move == DefenceMove::block_clip;
                 m_counters.slips += event.user_strike.move == DefenceMove::slip;
                 break;
             case FighterEvent::Type::user_strike_end:

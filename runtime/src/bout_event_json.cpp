@@ -76,6 +76,7 @@ nlohmann::json event_object(const Bout& bout, const BoutEvent& bout_event) {
         line["aimed_at"] = event.user_strike.at_head ? "head" : "chest";
         line["move"] = defence_move_name(event.user_strike.move);
         line["arm"] = event.user_strike.arm == 0 ? "left" : "right";
+        if (event.user_strike.block_clip >= 0) line["block_clip"] = bout.database().string(bout.database().clips[event.user_strike.block_clip].name);
         line["time_to_impact_s"] = event.user_strike.time_to_impact_s;
         line["detected"] = event.user_strike.detected;
         line["hand_speed_mps"] = event.user_strike.hand_speed_mps;
@@ -88,6 +89,9 @@ nlohmann::json event_object(const Bout& bout, const BoutEvent& bout_event) {
         if (event.user_strike.forearm_to_path_m >= 0.0) line["forearm_to_path_m"] = event.user_strike.forearm_to_path_m;
         line["detected"] = event.user_strike.detected;
         if (event.user_strike.blocking_arm >= 0) line["blocking_arm"] = event.user_strike.blocking_arm == 0 ? "left" : "right";
+        if (event.user_strike.block_clip >= 0) line["block_clip"] = bout.database().string(bout.database().clips[event.user_strike.block_clip].name);
+        if (event.user_strike.arm_speed_mps >= 0.0) line["arm_speed_mps"] = event.user_strike.arm_speed_mps;
+        if (event.user_strike.clip_arm_speed_mps >= 0.0) line["clip_arm_speed_mps"] = event.user_strike.clip_arm_speed_mps;
         line["joint_limit_violations"] = event.joint_limit_violations;
         line["foot_shift_m"] = event.foot_shift_m;
         break;

@@ -12,7 +12,8 @@ namespace kumite {
 const char* defence_move_name(DefenceMove move) {
     switch (move) {
     case DefenceMove::none: return "none";
-    case DefenceMove::block: return "block";
+    case DefenceMove::synthesized: return "synthesized";
+    case DefenceMove::block_clip: return "block_clip";
     case DefenceMove::slip: return "slip";
     }
     return "?";
@@ -85,7 +86,7 @@ void Defence::end_strike(double t_s, Hand& hand, UserStrikeOutcome outcome) {
     event.ended = true;
     event.t_s = t_s;
     event.outcome = outcome;
-    event.forearm_to_path_m = event.move == DefenceMove::block ? hand.closest_forearm_m : -1.0;
+    event.forearm_to_path_m = is_block(event.move) ? hand.closest_forearm_m : -1.0;
     push(event);
     hand.striking = false;
     hand.armed = false;
@@ -101,7 +102,7 @@ bool Defence::block_plan(const Hand& hand, const DefenderBody& body, double time
     for (const int candidate : {near_arm, 1 - near_arm}) {
         if (!arms[candidate]) continue;
         // Where the forearm meets the course: block_before_m short of the target, else half that (more time).
-        for (const double before : {m_settings.block_before_m, 0.5 * m_settings.block_before_m}) {
+        for (const double before : {m_block_before_m, 0.5 * m_block_before_m}) {
             const double intercept_s = time_to_impact - before / speed;
             const Eigen::Vector3d intercept = hand.position + hand.velocity * std::max(0.0, intercept_s);
             const double travel = (intercept - body.wrist[candidate]).norm();
@@ -119,12 +120,15 @@ bool Defence::block_plan(const Hand& hand, const DefenderBody& body, double time
 void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, double time_to_impact, const Allowed& allowed) {
     Eigen::Vector3d wrist_target;
     int arm = 0;
+    m_block_before_m = m_settings.block_before_m;
+    m_time_to_impact_s = time_to_impact;
     if (block_plan(hand, body, time_to_impact, allowed.block_arms, wrist_target, arm)) {
-        m_move = DefenceMove::block;
+        m_move = DefenceMove::synthesized;
         m_arm = arm;
         m_wrist_target = wrist_target;
-        const double intercept_s = std::max(0.02, time_to_impact - m_settings.block_before_m / hand.velocity.norm());
-        m_ramp_s = std::max(0.03, 0.6 * intercept_s); // in place a little before the hand
+        m_intercept_s = std::max(0.02, time_to_impact - m_settings.block_before_m / hand.velocity.norm());
+        m_ramp_s = std::max(0.03, 0.6 * m_intercept_s); // in place a little before the hand
+        m_block_started = true;
     } else if (allowed.slip) {
         // Off the line: from the course's closest point to the head, sideways; straight at the head, to the side
         // the course does not favour.
@@ -148,7 +152,50 @@ void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, doubl
     hand.strike.arm = m_arm;
 }
 
+void Defence::use_block_clip(int clip, double clip_arm_speed_mps, double ramp_s) {
+    if (m_move != DefenceMove::synthesized || m_move_hand < 0) return;
+    m_move = DefenceMove::block_clip;
+    m_ramp_s = ramp_s;
+    m_block_before_m = m_settings.block_clip_before_m;
+    double time_s = 0.0;
+    course_point(m_block_before_m, m_wrist_target, time_s);
+    m_intercept_s = std::max(0.02, time_s);
+    UserStrikeEvent& strike = m_hands[m_move_hand].strike;
+    strike.move = DefenceMove::block_clip;
+    strike.block_clip = clip;
+    strike.clip_arm_speed_mps = clip_arm_speed_mps;
+    // The strike's event of this frame says so too.
+    for (int e = 0; e < m_event_count; ++e) {
+        UserStrikeEvent& event = m_events[e];
+        if (!event.ended && event.hand == strike.hand && event.t_s == strike.t_s) event = strike;
+    }
+}
+
+bool Defence::course_point(double before_m, Eigen::Vector3d& point, double& time_s) const {
+    if (m_move_hand < 0) return false;
+    const Hand& hand = m_hands[m_move_hand];
+    const double speed = hand.velocity.norm();
+    if (speed < 1e-6) return false;
+    time_s = m_time_to_impact_s - before_m / speed;
+    point = hand.position + hand.velocity * std::max(0.0, time_s);
+    return time_s > 0.02;
+}
+
+double Defence::time_to_block_point() const {
+    if (m_move_hand < 0) return 0.0;
+    const Hand& hand = m_hands[m_move_hand];
+    const double speed_squared = hand.velocity.squaredNorm();
+    return speed_squared > 1e-9 ? std::max(0.0, (m_wrist_target - hand.position).dot(hand.velocity) / speed_squared) : 0.0;
+}
+
+void Defence::note_arm_speed(double speed_mps) {
+    if (!is_block(m_move) || m_move_hand < 0 || !m_hands[m_move_hand].striking) return;
+    UserStrikeEvent& strike = m_hands[m_move_hand].strike;
+    strike.arm_speed_mps = std::max(strike.arm_speed_mps, speed_mps);
+}
+
 void Defence::update(double t_s, const UserHands& hands, const DefenderBody& body, const Allowed& allowed) {
+    m_block_started = false;
     // The move's weight: in over its ramp, held until after the hand's arrival, then out.
     if (m_move != DefenceMove::none) {
         if (t_s <= m_hold_until_s) {
@@ -190,7 +237,7 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
 
         if (hand.striking) {
             // Its path this frame against the blocking forearm, the head and the chest.
-            const bool blocking = m_move == DefenceMove::block && m_move_hand == side;
+            const bool blocking = is_block(m_move) && m_move_hand == side;
             if (blocking && hand.velocity.norm() >= m_settings.min_speed_mps) {
                 // The course is known better each frame (the first estimate mixes in the draw back): re-aim.
                 const Eigen::Vector3d target = hand.strike.at_head ? body.head : body.chest;

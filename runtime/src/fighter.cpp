@@ -74,6 +74,7 @@ const char* fighter_event_name(FighterEvent::Type type) {
 Fighter::Fighter(const MotionDatabaseView& database, const Retriever& retriever, std::vector<CharacterRig*> characters,
                  FighterSettings settings)
     : m_db(database), m_retriever(retriever), m_settings(settings), m_head_motion(settings.head_motion), m_defence(settings.defence),
+      m_block_clips(m_db),
       m_workspace(retriever.make_workspace()) {
     for (CharacterRig* character : characters) m_bodies.push_back(std::make_unique<Body>(character, database));
     m_guard_clip = first_clip_of(database, "rest");

@@ -7,6 +7,9 @@
 
 #include "kumite/core/joint_limits.h"
 #include "kumite/core/mir_edit.h"
+#include "kumite/core/contact_point.h"
+#include "kumite/core/smoothstep.h"
+#include "kumite/core/two_bone_ik.h"
 
 #include <Eigen/Geometry>
 
@@ -14,6 +17,33 @@
 #include <cmath>
 
 namespace kumite {
+namespace {
+
+// The elbow's swivel that keeps its bend `bend` (carried over to the shoulder->wrist line `root` -> `wrist`), or
+// `fallback` when the limb has no bend there.
+double swivel_keeping_bend(const Eigen::Vector3d& root, const Eigen::Vector3d& wrist, const Eigen::Vector3d& bend, const Eigen::Vector3d& reference,
+                           double fallback) {
+    if ((wrist - root).norm() < 1e-6) return fallback;
+    const Eigen::Vector3d axis = (wrist - root).normalized();
+    const Eigen::Vector3d across = bend - bend.dot(axis) * axis;
+    return across.norm() > 1e-3 ? limb_swivel(root, root + across, wrist, reference) : fallback;
+}
+
+// The wrist offset that puts a block's contact point (a third of the way from the wrist to the elbow) on `target`,
+// for an arm from `root` to `wrist` whose elbow keeps the bend `bend`: the elbow follows the wrist, so a few passes.
+Eigen::Vector3d contact_offset(const LimbChain& chain, const Eigen::Vector3d& root, const Eigen::Vector3d& wrist, const Eigen::Vector3d& bend,
+                               const Eigen::Vector3d& reference, const Eigen::Vector3d& target) {
+    Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+    for (int pass = 0; pass < 4; ++pass) {
+        const Eigen::Vector3d asked = wrist + offset;
+        const TwoBoneSolution solved = two_bone_ik(root, asked, chain.upper_length, chain.lower_length,
+                                                   swivel_keeping_bend(root, asked, bend, reference, 0.0), reference);
+        offset += target - (solved.extremity + k_block_contact_fraction * (solved.middle - solved.extremity));
+    }
+    return offset;
+}
+
+} // namespace
 
 void Fighter::defend(double t_s) {
     const Body& body = *m_bodies[m_character];
@@ -45,6 +75,10 @@ void Fighter::defend(double t_s) {
         allowed = Defence::Allowed{{false, false}, false};
     }
     m_defence.update(t_s, m_hands, defender, allowed);
+    if (m_defence.block_started()) {
+        m_block_last_s = -1.0;
+        start_block_clip(anatomy, defender);
+    }
     for (const UserStrikeEvent& seen : m_defence.events()) {
         FighterEvent event;
         event.type = seen.ended ? FighterEvent::Type::user_strike_end : FighterEvent::Type::user_strike;
@@ -59,6 +93,30 @@ void Fighter::defend(double t_s) {
         push_event(event);
     }
     m_defence.clear_events();
+}
+
+void Fighter::start_block_clip(const RestAnatomy& anatomy, const DefenderBody& defender) {
+    if (m_block_clips.empty() || !m_defence.settings().captured_blocks) return;
+    const int side = m_defence.block_arm();
+    const int limb = side == 0 ? int(Limb::arm_l) : int(Limb::arm_r);
+    const LimbChain& chain = anatomy.limbs[limb];
+    BlockClipQuery query;
+    query.limb = limb;
+    // Against the head the forearm rises over it (age-uke); below the head it sweeps down (gedan-barai). A chest
+    // punch is mostly above a gedan-barai's reach: those fall back to the synthesized block.
+    query.kind = m_defence.move_strike().at_head ? StrikeKind::rising : StrikeKind::downward;
+    if (!m_defence.course_point(m_defence.settings().block_clip_before_m, query.contact_target, query.time_s)) return;
+    query.heading_yaw_rad = m_heading.yaw_rad;
+    query.shoulder = defender.shoulder[side];
+    query.wrist = defender.wrist[side];
+    query.upper_length = chain.upper_length;
+    query.lower_length = chain.lower_length;
+    if (!m_block_clips.choose(query, anatomy, m_block_choice)) return; // no captured block gets there in time
+    // A clip whose forearm would have to be carried more than half an arm away is another movement: synthesized.
+    if (m_block_choice.contact_error_m > 0.5 * chain.length()) return;
+    m_defence.use_block_clip(m_block_choice.clip, m_block_choice.clip_arm_speed_mps, std::max(0.03, 0.6 * query.time_s));
+    m_block_played = 0.0;
+    m_block_played_s = m_now_s;
 }
 
 void Fighter::apply_defence() {
@@ -98,22 +156,51 @@ void Fighter::apply_defence() {
         mir_frame_turn(m_defended_frame, TrunkPivot::spine_base, Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis)), before[base],
                        anatomy.leg_length, anatomy.ankle_height);
     }
-    if (block > 0.0) {
-        // The wrist driven onto the hand's course, and the elbow keeping the guard's bend carried over to the new
-        // shoulder->wrist line (as strikes keep their clip's bends), so it cannot flip.
+    const int block_side = m_defence.block_arm();
+    const int block_limb = block_side == 0 ? int(Limb::arm_l) : int(Limb::arm_r);
+    Eigen::Vector3d asked = Eigen::Vector3d::Zero(); // where the blocking wrist is asked to go
+    if (block > 0.0 && m_defence.move() == DefenceMove::block_clip) {
+        // The captured block's arm at the played frame over the shown pose, its wrist offset so that the forearm's
+        // contact meets the course at the clip's hit frame (the offset grows with the clip's progress).
         const int side = m_defence.block_arm();
         const int limb = side == 0 ? int(Limb::arm_l) : int(Limb::arm_r);
-        const Eigen::Vector3d natural = body.decoder.limb_targets()[limb]; // the undefended decode's wrist
+        const BlockClipChoice& choice = m_block_choice;
+        const double lead = std::max(1, choice.hit_frame - choice.start_frame);
+        // Timed by the fist: the clip's rest up to its hit should end a little before the fist reaches the meeting
+        // point (its course is known better every frame), at 0.4 to 1.5 times the captured speed.
+        const double ft = m_block_clips.frame_time_s();
+        const double remaining_clip_s = (lead - m_block_played) * ft, fist_s = m_defence.time_to_block_point();
+        const double rate = std::clamp(remaining_clip_s / std::max(0.8 * fist_s, 1e-3), 0.4, 1.5);
+        m_block_played = std::min(lead, m_block_played + (m_now_s - m_block_played_s) * rate / ft);
+        m_block_played_s = m_now_s;
+        const double played = m_block_played;
+        const Eigen::Vector3d shoulder = before[anatomy.limbs[limb].root];
+        m_block_clips.apply(m_defended_frame, anatomy, limb, choice.clip, choice.start_frame + played, block, shoulder, m_heading.yaw_rad);
+        // The offset at the hit frame, with the elbow bending as the clip's does there (as it will be decoded).
+        const auto at_hit = m_block_clips.arm_points(anatomy, limb, choice.clip, choice.hit_frame, shoulder, m_heading.yaw_rad, Eigen::Vector3d::Zero());
+        const Eigen::Vector3d offset = contact_offset(anatomy.limbs[limb], shoulder, at_hit.wrist, limb_bend_direction(shoulder, at_hit.elbow, at_hit.wrist),
+                                                      limb_swivel_reference(m_defended_frame, limb), m_defence.block_wrist_target());
         pins.pinned[limb] = false;
-        pins.extremity_offset_world[limb] = block * (m_defence.block_wrist_target() - natural);
-        const Eigen::Vector3d root = before[anatomy.limbs[limb].root], asked = natural + pins.extremity_offset_world[limb];
-        if ((asked - root).norm() > 1e-6) {
-            const Eigen::Vector3d axis = (asked - root).normalized();
-            Eigen::Vector3d bend = bends[side] - bends[side].dot(axis) * axis;
-            if (bend.norm() > 1e-3) {
-                m_defended_frame.swivel[limb] = limb_swivel(root, root + bend, asked, limb_swivel_reference(m_defended_frame, limb));
-            }
-        }
+        pins.extremity_offset_world[limb] = block * smoothstep(played / lead) * offset;
+        asked = shoulder + m_defended_frame.part_frames[anatomy.limbs[limb].parent_part] * m_defended_frame.extremity[limb] * anatomy.limbs[limb].length() +
+                pins.extremity_offset_world[limb];
+        // The elbow bends as the clip's does (from the guard's, as the block blends in).
+        const auto clip_arm =
+            m_block_clips.arm_points(anatomy, limb, choice.clip, choice.start_frame + played, shoulder, m_heading.yaw_rad, Eigen::Vector3d::Zero());
+        const Eigen::Vector3d blended = (1.0 - block) * bends[side] + block * limb_bend_direction(shoulder, clip_arm.elbow, clip_arm.wrist);
+        if (blended.norm() > 1e-6) bends[side] = blended.normalized();
+    } else if (block > 0.0) {
+        // The wrist driven onto the hand's course.
+        const Eigen::Vector3d natural = body.decoder.limb_targets()[block_limb]; // the undefended decode's wrist
+        pins.pinned[block_limb] = false;
+        pins.extremity_offset_world[block_limb] = block * (m_defence.block_wrist_target() - natural);
+        asked = natural + pins.extremity_offset_world[block_limb];
+    }
+    if (block > 0.0) {
+        // The elbow keeps its bend (the guard's, or the captured clip's) carried over to the new shoulder->wrist line,
+        // as strikes keep their clip's bends, so it cannot flip.
+        m_defended_frame.swivel[block_limb] = swivel_keeping_bend(before[anatomy.limbs[block_limb].root], asked, bends[block_side],
+                                                                  limb_swivel_reference(m_defended_frame, block_limb), m_defended_frame.swivel[block_limb]);
     }
     body.decoder.decode(m_pose, m_defended_frame, pins);
     m_shown_by_adapter = false;
@@ -127,6 +214,19 @@ void Fighter::apply_defence() {
         m_defence_foot_shift_m = std::max(m_defence_foot_shift_m, (ankle - ankles[side]).norm());
     }
     m_defence_violations += joint_violation_count(violations);
+    if (block > 0.0) {
+        // The blocking arm's fastest move relative to its shoulder, for the block's event (no pop: measured against
+        // the captured clip's own).
+        const LimbChain& arm = anatomy.limbs[m_defence.block_arm() == 0 ? int(Limb::arm_l) : int(Limb::arm_r)];
+        const Eigen::Vector3d wrist = after[arm.extremity] - after[arm.root], elbow = after[arm.middle] - after[arm.root];
+        if (m_block_last_s >= 0.0 && m_now_s - m_block_last_s > 1e-6) {
+            const double step = std::max((wrist - m_block_last_wrist).norm(), (elbow - m_block_last_elbow).norm());
+            m_defence.note_arm_speed(step / (m_now_s - m_block_last_s));
+        }
+        m_block_last_wrist = wrist;
+        m_block_last_elbow = elbow;
+        m_block_last_s = m_now_s;
+    }
 }
 
 } // namespace kumite

@@ -80,7 +80,7 @@ TEST_CASE("defence: a punch at the head is blocked with the arm on its side; wit
     REQUIRE(events.size() == 2);
     CHECK_FALSE(events[0].ended);
     CHECK(events[0].at_head);
-    CHECK(events[0].move == DefenceMove::block);
+    CHECK(events[0].move == DefenceMove::synthesized);
     CHECK(events[0].arm == 1); // the fighter's right arm
     CHECK(events[0].time_to_impact_s > 0.05);
     CHECK(events[1].ended);
@@ -169,7 +169,7 @@ TEST_CASE("defence: only the allowed moves start: the free arm blocks while the 
     Defence left_striking;
     const auto across = follow(left_striking, straight(from, to, 6.0), guard_body(), Defence::Allowed{{false, true}, false});
     REQUIRE(!across.empty());
-    CHECK(across[0].move == DefenceMove::block);
+    CHECK(across[0].move == DefenceMove::synthesized);
     CHECK(across[0].arm == 1);
     // No arm free and no slip (a kick that needs both arms? no: a strike that holds the trunk): taken as it comes.
     Defence nothing_free;

@@ -145,7 +145,7 @@ TEST_CASE("fighter: a punching user's strikes are blocked or slipped with defenc
                 for (const FighterEvent& event : b.fighter->events()) b.events.push_back(event);
                 b.fighter->clear_events();
             }
-            int seen = 0, defended = 0, landed = 0, violations = 0, far_blocks = 0;
+            int seen = 0, defended = 0, landed = 0, violations = 0, far_blocks = 0, head_blocks = 0, captured_at_head = 0;
             double foot_shift = 0.0;
             for (const FighterEvent& e : b.events) {
                 if (e.type != FighterEvent::Type::user_strike_end) continue;
@@ -155,6 +155,8 @@ TEST_CASE("fighter: a punching user's strikes are blocked or slipped with defenc
                 far_blocks += e.user_strike.outcome == UserStrikeOutcome::blocked && e.user_strike.forearm_to_path_m > 0.05;
                 violations += e.joint_limit_violations;
                 foot_shift = std::max(foot_shift, e.foot_shift_m);
+                head_blocks += e.user_strike.at_head && is_block(e.user_strike.move);
+                captured_at_head += e.user_strike.at_head && e.user_strike.move == DefenceMove::block_clip;
             }
             INFO(character << (defend ? " defending: " : " not defending: ") << seen << " user strikes, " << defended << " defended, " << landed
                            << " landed");
@@ -165,6 +167,10 @@ TEST_CASE("fighter: a punching user's strikes are blocked or slipped with defenc
                 CHECK(violations == 0);
                 CHECK(foot_shift < 1e-6);
                 CHECK(bone_error < 1e-9);
+                // Punches at the head are met by captured rising blocks (block_clips.h), not synthesized ones.
+                INFO(captured_at_head << " of " << head_blocks << " blocks at the head captured");
+                CHECK(captured_at_head >= 0.7 * head_blocks);
+                CHECK(head_blocks > 0);
             } else {
                 CHECK(landed >= 0.8 * seen);
             }

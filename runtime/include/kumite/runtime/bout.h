@@ -60,6 +60,7 @@ struct BoutCounters {
     long long latched_strikes = 0, latched_hits = 0, predicted_strikes = 0, predicted_hits = 0; // by aim
     // The user's strikes at the fighter: how each ended, and how close a blocked one's path came to the forearm.
     long long user_strikes = 0, blocked = 0, slipped = 0, hit_by_user = 0, user_missed = 0, blocks = 0, slips = 0;
+    long long block_clips = 0; // of the blocks, captured ones (block_clips.h); the rest synthesized
     std::array<std::array<long long, 4>, 2> user_outcomes_by_target{}; // [head, chest][UserStrikeOutcome]
     ValueHistogram forearm_to_path_m{1e-4, 10.0};
     long long defence_joint_limit_violations = 0;

@@ -4,8 +4,10 @@
 // within `threat_radius_m` of the fighter's head or chest within `horizon_s` starts a user strike. A fighter at
 // rest or approaching then defends:
 //   block — the forearm on the side the hand comes from is moved onto the hand's predicted path, a third of a metre
-//           before the target (the arm's extremity driven by a world offset, as a strike drives its hit point:
-//           two-bone IK with the clip's swivel), when the wrist can get there in time at a plausible speed;
+//           before the target, when the wrist can get there in time at a plausible speed: a captured block
+//           (`block_clip`: the fighter retrieves and plays one, block_clips.h) when one fits, else `synthesized`
+//           (the arm's extremity driven by a world offset, as a strike drives its hit point: two-bone IK with the
+//           guard's swivel);
 //   slip  — otherwise the trunk leans the head (and chest) off the hand's line, turning above the spine's base.
 // Each user strike ends as `blocked` (the hand's path this frame met a forearm of the fighter: the blocking one, or
 // the other held in the guard), `hit_by_user` (it met the head or chest), `slipped` (it went back without either
@@ -16,12 +18,14 @@
 #include "kumite/core/heading_frame.h"
 #include "kumite/runtime/simulated_hands.h"
 
+#include <algorithm>
 #include <array>
 #include <span>
 
 namespace kumite {
 
-enum class DefenceMove { none, block, slip };
+enum class DefenceMove { none, synthesized, block_clip, slip };
+inline bool is_block(DefenceMove move) { return move == DefenceMove::synthesized || move == DefenceMove::block_clip; }
 enum class UserStrikeOutcome { blocked, slipped, hit_by_user, missed };
 const char* defence_move_name(DefenceMove move);
 const char* user_strike_outcome_name(UserStrikeOutcome outcome);
@@ -41,6 +45,9 @@ struct DefenceSettings {
     double contact_speed_mps = 2.0;   // a hand meeting the head or chest at least this fast is a strike that arrived
     double hold_s = 0.2;              // the move held after the hand's expected arrival
     double release_s = 0.3;           // back to the guard
+    bool captured_blocks = true;      // blocks from the database's block clips when one fits (else all synthesized)
+    double block_clip_before_m = 0.15; // a captured block meets the course this far before the target (an age-uke
+                                       // deflects the fist just in front of the face)
 };
 
 // The fighter's body as the defence sees it (world metres, last frame): arms [left, right].
@@ -66,6 +73,9 @@ struct UserStrikeEvent {
     double forearm_to_path_m = -1.0; // ended blocks: the closest the hand's path came to the blocking forearm
     bool detected = true;            // false: it arrived without having been seen coming (counted, not defended)
     int blocking_arm = -1;           // blocked: the forearm that met it (0 left, 1 right)
+    int block_clip = -1;             // block_clip: the database clip played
+    double arm_speed_mps = -1.0;     // ended blocks: the fastest the blocking wrist or elbow moved relative to the shoulder
+    double clip_arm_speed_mps = -1.0; // block_clip: the same for the captured clip itself, on this arm
 };
 
 // The distance between segments [a0, a1] and [b0, b1].
@@ -94,7 +104,21 @@ public:
     // This frame's edits: the block's arm, weight and wrist target; the slip's weight and head offset.
     DefenceMove move() const { return m_move; }
     int block_arm() const { return m_arm; }
-    double block_weight() const { return m_move == DefenceMove::block ? m_weight : 0.0; }
+    double block_weight() const { return is_block(m_move) ? m_weight : 0.0; }
+    // A block started this frame (synthesized until use_block_clip says otherwise), the strike it answers, when it
+    // started and how long until the forearm meets the fist's course.
+    bool block_started() const { return m_block_started; }
+    const UserStrikeEvent& move_strike() const { return m_hands[std::max(0, m_move_hand)].strike; }
+    double move_start_s() const { return m_move_start_s; }
+    double intercept_s() const { return m_intercept_s; }
+    // The block that started is a captured one: its clip, the clip's own arm speed and the blend in.
+    void use_block_clip(int clip, double clip_arm_speed_mps, double ramp_s);
+    // Where the course of the strike the move answers is `before_m` short of its target, and when (from now).
+    bool course_point(double before_m, Eigen::Vector3d& point, double& time_s) const;
+    // How long the fist still needs to the block's meeting point (block_wrist_target), along its course now; 0 once past.
+    double time_to_block_point() const;
+    // The blocking arm's speed this frame (relative to its shoulder), for the block's event.
+    void note_arm_speed(double speed_mps);
     const Eigen::Vector3d& block_wrist_target() const { return m_wrist_target; }
     double slip_weight() const { return m_move == DefenceMove::slip ? m_weight : 0.0; }
     const Eigen::Vector3d& slip_offset() const { return m_slip_offset; } // full lean, world, horizontal
@@ -132,7 +156,10 @@ private:
     int m_move_hand = -1;
     int m_arm = 0;
     double m_weight = 0.0;
-    double m_move_start_s = 0.0, m_ramp_s = 0.1, m_hold_until_s = 0.0;
+    double m_move_start_s = 0.0, m_ramp_s = 0.1, m_hold_until_s = 0.0, m_intercept_s = 0.0;
+    bool m_block_started = false;
+    double m_block_before_m = 0.3;   // the move's meeting point before the target
+    double m_time_to_impact_s = 0.0; // at the move's start
     Eigen::Vector3d m_wrist_target = Eigen::Vector3d::Zero(), m_slip_offset = Eigen::Vector3d::Zero();
     std::array<UserStrikeEvent, 8> m_events;
     int m_event_count = 0;

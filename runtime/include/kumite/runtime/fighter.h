@@ -16,6 +16,7 @@
 // strike carries on, decoded on the new character.
 
 #include "kumite/core/strike_adaptation.h"
+#include "kumite/runtime/block_clips.h"
 #include "kumite/runtime/defence.h"
 #include "kumite/runtime/head_motion_filter.h"
 #include "kumite/runtime/simulated_hands.h"
@@ -213,6 +214,8 @@ private:
     void finish_frame();
     void defend(double t_s);        // follows the user's hands, starts and ends moves, emits their events
     void apply_defence();           // decodes the shown pose again with the move's edits (when one is on)
+    // A block just started: a captured one instead when one fits (block_clips.h).
+    void start_block_clip(const RestAnatomy& anatomy, const DefenderBody& defender);
     bool order_fits(const StrikeOrder& order, const char*& why) const;
     // A retrieval that prefers a clip not struck lately (FighterSettings::variety_recent); `varied` tells if it did.
     RetrievalResult query_with_variety(RetrievalQuery& query, bool& varied);
@@ -248,6 +251,12 @@ private:
     HeadMotionFilter m_head_motion;
     UserHands m_hands;                   // this frame's
     Defence m_defence;
+    BlockClips m_block_clips;            // the database's captured blocks
+    BlockClipChoice m_block_choice;      // the one being played (block_clip moves)
+    Eigen::Vector3d m_block_last_wrist = Eigen::Vector3d::Zero(), m_block_last_elbow = Eigen::Vector3d::Zero(); // relative to the shoulder
+    double m_block_last_s = -1.0;        // when they were measured; < 0: not yet in this block
+    double m_block_played = 0.0;         // clip frames of the captured block played since its start frame
+    double m_block_played_s = 0.0;       // when
     MirFrame m_defended_frame;           // scratch: the shown frame with the defence's edits
     LimbPins m_defence_pins;
     int m_defence_violations = 0;        // joint-limit violations of the defence's edits, since the last user strike ended

@@ -1,0 +1,85 @@
+#pragma once
+// Captured blocks for the defence (defence.h): the database's `block` clips (age-uke, gedan-barai, ...), chosen
+// for a user's strike and played on the fighter's blocking arm over whatever the rest of the body is doing.
+//
+// Choice. A candidate is a start frame of a block clip of the blocking arm's side (and of the wanted kind when the
+// database holds one: rising against the head, downward below it) whose lead to the clip's hit frame fits in the
+// time the fist leaves (played at most at the captured speed, at least at 0.4 of it). Its score is
+//     d = |wrist at the start - wrist now| / arm + |contact at the hit - where the forearm must meet the course| / arm
+// with both clip points placed on the fighter's arm as it is now: the clip's arm as captured relative to its
+// shoulder, turned from the clip's heading to the fighter's and scaled by arm length (MIR, mir.h), the elbow by
+// two-bone IK with the clip's swivel; the contact is a third of the way from the wrist to the elbow
+// (contact_point.h). Headings, not the trunk's part frames, carry the arm over: they mean the same on every
+// skeleton, where a clavicle's frame may be rolled differently on another.
+//
+// Playback. The arm's extremity, swivel and the upper arm's, forearm's and hand's frames are the clip's at the
+// played frame, turned onto the fighter's heading, blended over the shown pose by the defence's weight; the wrist is
+// offset so that the contact meets the course at the hit frame (the offset grows with the clip's progress, like a
+// strike's d(t)). Nothing here allocates after construction.
+
+#include "kumite/core/mir.h"
+#include "kumite/core/motion_database.h"
+
+#include <vector>
+
+namespace kumite {
+
+struct BlockClipQuery {
+    int limb = 0;                          // Limb::arm_l or Limb::arm_r: the blocking arm
+    StrikeKind kind = StrikeKind::none;    // wanted (rising, downward); none or absent from the database: any
+    Eigen::Vector3d contact_target = Eigen::Vector3d::Zero(); // world: where the forearm must meet the course
+    double time_s = 0.2;                   // until the fist gets there
+    double heading_yaw_rad = 0.0;          // the fighter's heading (heading_frame.h)
+    Eigen::Vector3d shoulder = Eigen::Vector3d::Zero(), wrist = Eigen::Vector3d::Zero(); // world, now
+    double upper_length = 0.3, lower_length = 0.3;
+};
+
+struct BlockClipChoice {
+    int clip = -1;
+    int start_frame = 0;
+    int hit_frame = 0;
+    double rate = 1.0;        // clip seconds per second (<= 1: never faster than captured)
+    double score = 0.0;
+    double contact_error_m = 0.0;   // the clip's contact at the hit, on the fighter, to the target (before the offset)
+    double clip_arm_speed_mps = 0.0; // the fastest the clip moves the wrist or elbow relative to the shoulder, as played
+};
+
+class BlockClips {
+public:
+    explicit BlockClips(const MotionDatabaseView& database);
+    bool empty() const { return m_clips.empty(); }
+    int count() const { return static_cast<int>(m_clips.size()); }
+
+    bool choose(const BlockClipQuery& query, const RestAnatomy& anatomy, BlockClipChoice& choice) const;
+
+    // The clip's arm at (fractional) clip frame `frame` written into `out` (a copy of the shown frame, whose
+    // shoulder is at `shoulder` and heading `heading_yaw_rad`), blended by `weight`.
+    void apply(MirFrame& out, const RestAnatomy& anatomy, int limb, int clip, double frame, double weight, const Eigen::Vector3d& shoulder,
+               double heading_yaw_rad) const;
+
+    // The clip's wrist, elbow and contact point at `frame`, placed on the fighter's shoulder and heading (world),
+    // with the wrist moved by `wrist_offset`.
+    struct ArmPoints {
+        Eigen::Vector3d wrist, elbow, contact;
+    };
+    ArmPoints arm_points(const RestAnatomy& anatomy, int limb, int clip, double frame, const Eigen::Vector3d& shoulder, double heading_yaw_rad,
+                         const Eigen::Vector3d& wrist_offset) const;
+
+    double frame_time_s() const { return m_frame_time_s; }
+
+private:
+    struct ArmFrame {
+        Eigen::Vector3d extremity = Eigen::Vector3d::Zero(); // in the parent part's frame / arm length
+        double swivel = 0.0;
+        std::array<Eigen::Quaterniond, 4> parts;             // parent part, upper arm, forearm, hand (world, clip)
+        Eigen::Quaterniond chest = Eigen::Quaterniond::Identity();
+        double yaw_rad = 0.0;                                // the clip pose's heading
+    };
+    ArmFrame arm_frame(int clip, double frame, int limb, int parent_part) const;
+
+    const MotionDatabaseView& m_db;
+    std::vector<int> m_clips; // database indices of the block clips
+    double m_frame_time_s = 1.0 / 30.0;
+};
+
+} // namespace kumite
