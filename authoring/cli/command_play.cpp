@@ -35,7 +35,7 @@ const CommandSpec& play_spec() {
         "play",
         "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:HEAD[,LEFT,RIGHT]] | replay:FILE | simulate:KIND|FILE] "
         "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] "
-        "[--aim latched|predicted] [--variety N] [--no-defence] [--synthesized-blocks] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json]",
+        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json]",
         "Runs the fighter at 60 Hz against the user's head and hands (a DTrack system, a replayed CSV, or a\n"
         "simulated user) and the supervisor's commands, one per line: punch [left|right] [straight|hook|uppercut]\n"
         "[low|middle|high], kick [left|right] [front|roundhouse|side] [low|middle|high], slash [left|right] [low|middle|high],\n"
@@ -65,7 +65,8 @@ const CommandSpec& play_spec() {
          {"steer-until", "S", "predicted aim: the strike follows the head until S before its contact (default 0.15 s; 0: never steers)"},
          {"variety", "N", "prefer a clip not used in the last N strikes when one scores within 0.15 of the best (default 6, 0: always the best)"},
          {"no-defence", "", "the fighter does not block or slip the user's strikes (also the command 'defence on|off', the viewer's D key)"},
-         {"synthesized-blocks", "", "blocks are synthesized from the guard, never the database's captured blocks (to compare)"},
+         {"captured-blocks", "", "block punches at the head with the database's captured rising blocks when one fits (events: move block_clip); "
+                                 "else every block is synthesized from the guard"},
          {"aim", "latched|predicted", "strike the head where it was at the order (default), or where it will be at the contact\n"
                                       "if it keeps its course (also the command 'aim latched|predicted' and the viewer's A key)"},
          {"record", "OUT.bvh|OUT.glb", "the first fighter's motion on the starting character (glTF: with its body)"},
@@ -173,7 +174,7 @@ int run_play(int argc, char** argv) {
     options.plans_per_frame = static_cast<int>(*plans_per_frame);
     options.fighter.aim = aim;
     options.fighter.defence.enabled = !arguments.has("no-defence");
-    options.fighter.defence.captured_blocks = !arguments.has("synthesized-blocks");
+    options.fighter.defence.captured_blocks = arguments.has("captured-blocks");
     options.fighter.variety_recent = static_cast<int>(*variety);
     options.record = arguments.value("record").has_value();
     if (std::optional<std::string> problem = options.record ? recording_path_problem(*arguments.value("record")) : std::nullopt) {

@@ -113,7 +113,18 @@ void Fighter::start_block_clip(const RestAnatomy& anatomy, const DefenderBody& d
     query.lower_length = chain.lower_length;
     if (!m_block_clips.choose(query, anatomy, m_block_choice)) return; // no captured block gets there in time
     // A clip whose forearm would have to be carried more than half an arm away is another movement: synthesized.
-    if (m_block_choice.contact_error_m > 0.5 * chain.length()) return;
+    if (m_block_choice.contact_error_m > m_defence.settings().block_clip_reach * chain.length()) return;
+    // And one whose elbow, bent as the clip bends it, cannot put the forearm there (the course too close to the
+    // body for that arm's shape) is not played either.
+    const auto at_hit = m_block_clips.arm_points(anatomy, limb, m_block_choice.clip, m_block_choice.hit_frame, query.shoulder, m_heading.yaw_rad,
+                                                 Eigen::Vector3d::Zero());
+    const Eigen::Vector3d bend = limb_bend_direction(query.shoulder, at_hit.elbow, at_hit.wrist), reference = limb_swivel_reference(m_mir, limb);
+    const Eigen::Vector3d offset = contact_offset(chain, query.shoulder, at_hit.wrist, bend, reference, query.contact_target);
+    const Eigen::Vector3d asked = at_hit.wrist + offset;
+    const TwoBoneSolution placed = two_bone_ik(query.shoulder, asked, chain.upper_length, chain.lower_length,
+                                               swivel_keeping_bend(query.shoulder, asked, bend, reference, 0.0), reference);
+    const Eigen::Vector3d contact = placed.extremity + k_block_contact_fraction * (placed.middle - placed.extremity);
+    if ((contact - query.contact_target).norm() > m_defence.settings().block_contact_m) return;
     m_defence.use_block_clip(m_block_choice.clip, m_block_choice.clip_arm_speed_mps, std::max(0.03, 0.6 * query.time_s));
     m_block_played = 0.0;
     m_block_played_s = m_now_s;
@@ -170,7 +181,7 @@ void Fighter::apply_defence() {
         // point (its course is known better every frame), at 0.4 to 1.5 times the captured speed.
         const double ft = m_block_clips.frame_time_s();
         const double remaining_clip_s = (lead - m_block_played) * ft, fist_s = m_defence.time_to_block_point();
-        const double rate = std::clamp(remaining_clip_s / std::max(0.8 * fist_s, 1e-3), 0.4, 1.5);
+        const double rate = std::clamp(remaining_clip_s / std::max(0.8 * fist_s, 1e-3), 0.4, 3.0);
         m_block_played = std::min(lead, m_block_played + (m_now_s - m_block_played_s) * rate / ft);
         m_block_played_s = m_now_s;
         const double played = m_block_played;

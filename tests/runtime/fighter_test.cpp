@@ -124,6 +124,7 @@ TEST_CASE("fighter: a punching user's strikes are blocked or slipped with defenc
         for (bool defend : {true, false}) {
             FighterSettings settings;
             settings.defence.enabled = defend;
+            settings.defence.captured_blocks = true;
             Bout b(content->view(), character, settings);
             SimulatedUser user(SimulatedKind::punch, 4);
             const RestAnatomy& anatomy = b.brawler.rig->anatomy();
