@@ -3,13 +3,17 @@
 // 0.25 s of its own, one to one (nearest hits first). Recall: matched / annotated; precision: matched / proposed;
 // kind agreement over the matched pairs. Per folder, as the issue asks, with the semantics confusion of
 // everything proposed (annotated semantics -> proposed, "none" for a strike missed or a proposal that matches none).
+// Strikes (what the fighter is ordered to throw) and blocks (the defence's moves) are also scored apart: a folder
+// whose blocks were never annotated (the kata) scores its blocks as extras without changing its strikes' precision.
 
 #include "capture_loading.h"
 #include "commands.h"
+#include "kumite/core/contact_point.h"
 #include "kumite/core/strike_detection.h"
 #include "kumite/formats/annotation_file.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -22,6 +26,14 @@ struct FolderTally {
     int files = 0, annotated = 0, proposed = 0, matched = 0, kinds_compared = 0, kinds_agreed = 0;
     std::map<std::string, std::map<std::string, int>> semantics; // annotated -> proposed -> count
     std::map<std::string, std::map<std::string, int>> kinds;     // of matched pairs
+    std::array<std::array<int, 3>, 2> split{};                   // [strikes, blocks][annotated, proposed, matched]
+    static nlohmann::json rates(const std::array<int, 3>& counts) {
+        return {{"annotated", counts[0]},
+                {"proposed", counts[1]},
+                {"matched", counts[2]},
+                {"recall", counts[0] ? double(counts[2]) / counts[0] : 1.0},
+                {"precision", counts[1] ? double(counts[2]) / counts[1] : 1.0}};
+    }
     nlohmann::json to_json() const {
         return {{"files", files},
                 {"annotated", annotated},
@@ -30,6 +42,8 @@ struct FolderTally {
                 {"recall", annotated ? double(matched) / annotated : 1.0},
                 {"precision", proposed ? double(matched) / proposed : 1.0},
                 {"kind_agreement", kinds_compared ? double(kinds_agreed) / kinds_compared : 1.0},
+                {"strikes", rates(split[0])},
+                {"blocks", rates(split[1])},
                 {"semantics_confusion", semantics},
                 {"kind_confusion", kinds}};
     }
@@ -102,6 +116,12 @@ int run_detection_compare(const std::vector<std::string>& paths, const std::stri
         ++tally.files;
         tally.annotated += int(annotated.size());
         tally.proposed += int(proposed.size());
+        for (const RawAnnotatedClip* clip : annotated) ++tally.split[semantics_is_block(clip->semantics)][0];
+        for (int p = 0; p < int(proposed.size()); ++p) {
+            const bool block = proposed[p].semantics == StrikeSemantics::block;
+            ++tally.split[block][1];
+            tally.split[block][2] += match_of_proposed[p] >= 0;
+        }
         nlohmann::json missed = nlohmann::json::array(), extra = nlohmann::json::array();
         for (int a = 0; a < int(annotated.size()); ++a) {
             const RawAnnotatedClip& clip = *annotated[a];
@@ -154,6 +174,9 @@ int run_detection_compare(const std::vector<std::string>& paths, const std::stri
                     100.0 * (tally.annotated ? double(tally.matched) / tally.annotated : 1.0),
                     100.0 * (tally.proposed ? double(tally.matched) / tally.proposed : 1.0),
                     100.0 * (tally.kinds_compared ? double(tally.kinds_agreed) / tally.kinds_compared : 1.0), tally.kinds_agreed, tally.kinds_compared);
+        const auto& s = tally.split;
+        std::printf("  strikes: %d annotated, %d proposed, %d matched; blocks: %d annotated, %d proposed, %d matched\n", s[0][0], s[0][1], s[0][2],
+                    s[1][0], s[1][1], s[1][2]);
         print_table("semantics", tally.semantics);
         print_table("kind", tally.kinds);
     }

@@ -40,6 +40,9 @@ TEST_CASE("cli: suggest --compare scores the detection on whole captures per fol
     CHECK(shorinryu["semantics_confusion"]["elbow"]["elbow"] == 1);
     CHECK(shorinryu["semantics_confusion"]["knee"]["knee"] == 1);
     CHECK(shorinryu["semantics_confusion"]["block"]["block"] == 2);
+    CHECK(shorinryu["strikes"]["matched"] == 4);
+    CHECK(shorinryu["blocks"]["matched"] == 2);
+    CHECK(shorinryu["blocks"]["precision"].get<double>() == Approx(1.0));
     CHECK(report["files"].size() == 6);
 
     // Against an annotation file that lacks the elbow strike, the same proposal is an extra: precision drops.
