@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Frames of a bout around each strike's contact, to judge by eye: the fighter (from `kumite play --record`), the
 user's head and hands as the tracker gave them (`--record-user`), the target aimed at and the hit point's path.
-One row per strike: five frames from 0.3 s before the contact to 0.1 s after, seen from the side (the fighter's
+One row per strike: frames from 0.3 s before the contact to 0.1 s after (--offsets), seen from the side (the fighter's
 right; the user to the right) above and from the top below.
 
   scripts/bout_filmstrip.py --fighter F.bvh --user U.csv --events E.jsonl [--strikes 0,1,2] [--types strike,user_strike]
@@ -38,8 +38,11 @@ def main():
     parser.add_argument("--strikes", default=None, help="indices of the strikes to draw (default: the first four)")
     parser.add_argument("--types", default="strike", help="event types to draw: strike (the fighter's), user_strike (the user's)")
     parser.add_argument("--kumite", default=os.path.join(root, "build", "bin", "kumite"))
+    parser.add_argument("--offsets", default=",".join(str(o) for o in OFFSETS_S),
+                        help="seconds from the contact of each column (default -0.3,-0.2,-0.1,0,0.1; a block wants a finer -0.15,...,0.05)")
     parser.add_argument("-o", "--out", required=True)
     args = parser.parse_args()
+    offsets = [float(o) for o in args.offsets.split(",")]
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -59,7 +62,7 @@ def main():
     if not chosen:
         sys.exit("bout_filmstrip: no such events in " + args.events)
 
-    fig, axes = plt.subplots(2 * len(chosen), len(OFFSETS_S), figsize=(3.0 * len(OFFSETS_S), 5.6 * len(chosen)), squeeze=False)
+    fig, axes = plt.subplots(2 * len(chosen), len(offsets), figsize=(3.0 * len(offsets), 5.6 * len(chosen)), squeeze=False)
     for row, event in enumerate(chosen):
         contact_s = event["t"] + (event.get("time_to_impact_s", 0.0) if event["type"] == "user_strike" else 0.0)
         effector = None
@@ -72,7 +75,7 @@ def main():
         f0 = min(len(fighter) - 1, max(0, int(round(contact_s * fps))))
         u0 = user[np.argmin(np.abs(user[:, 0] - contact_s))]
         centre = 0.5 * (fighter[f0, parts["pelvis"]] + u0[1:4])
-        for column, offset in enumerate(OFFSETS_S):
+        for column, offset in enumerate(offsets):
             t = contact_s + offset
             f = int(round(t * fps))
             if f < 0 or f >= len(fighter):
@@ -100,7 +103,7 @@ def main():
                 axis.set_xticks([])
                 axis.set_yticks([])
                 if view == 0:
-                    label = f"{offset:+.1f} s" if offset else "contact"
+                    label = f"{offset:+.2f} s" if offset else "contact"
                     if column == 0:
                         what = event.get("clip", event.get("hand", "")) + " " + event.get("result", event.get("move", ""))
                         label = f"t={event['t']:.2f} s {what}\n{label}"

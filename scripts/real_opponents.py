@@ -42,7 +42,7 @@ def bout(args, work, opponent, seconds, character):
     report = os.path.join(work, name + ".json")
     command = [args.kumite, "play"] + ([args.db] if args.db else []) + [
         "--headless", "--duration", f"{seconds:.3f}", "--tracker", f"capture:{opponent}:{args.distance}", "--character", character,
-        "--commands", f"script:{script}", "--aim", args.aim, "--seed", "1", "--report", report]
+        "--commands", f"script:{script}", "--aim", args.aim, "--seed", "1", "--report", report] + args.play_args.split()
     if args.events:
         command += ["--events", os.path.join(args.events, name + ".jsonl")]
     done = subprocess.run(command, capture_output=True, text=True)
@@ -62,6 +62,7 @@ def main():
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     parser.add_argument("--events", default=None, help="a folder to keep each bout's events in")
     parser.add_argument("--kumite", default=os.path.join(root, "build", "bin", "kumite"))
+    parser.add_argument("--play-args", default="", help="more arguments for kumite play, e.g. --captured-blocks")
     args = parser.parse_args()
 
     opponents = sorted(path for pattern in args.opponents.split(",") for path in glob.glob(pattern))
@@ -85,6 +86,7 @@ def main():
                          "queued": orders.get("queued", 0), "expired": orders.get("expired", 0),
                          "ignored": report["ignored_orders"], "strikes": report["strikes"], "hits": report["hits"],
                          "user_seen": user["seen"], "blocked": user["blocked"], "slipped": user["slipped"],
+                         "blocks": user["blocks"], "block_clips": user.get("block_clips", 0),
                          "landed": user["hit_by_user"], "user_missed": user["missed"],
                          "joint_limit_violations": report["joint_limit_violations"] + user["joint_limit_violations"],
                          "defence_foot_shift_m": user["foot_shift_m"]})
@@ -103,7 +105,9 @@ def main():
               f"{fmt(row['blocked'] + row['slipped'], would_land):>11s} {row['landed']:6d}", file=sys.stderr)
     per_opponent = {}
     for row in rows:
-        total = per_opponent.setdefault(row["opponent"], {"strikes": 0, "hits": 0, "defended": 0, "would_land": 0})
+        total = per_opponent.setdefault(row["opponent"], {"strikes": 0, "hits": 0, "defended": 0, "would_land": 0, "blocks": 0, "block_clips": 0})
+        total["blocks"] += row["blocks"]
+        total["block_clips"] += row["block_clips"]
         total["strikes"] += row["strikes"]
         total["hits"] += row["hits"]
         total["defended"] += row["blocked"] + row["slipped"]
@@ -111,7 +115,8 @@ def main():
     for total in per_opponent.values():
         total["hit_rate"] = rate(total["hits"], total["strikes"])
         total["defended_rate"] = rate(total["defended"], total["would_land"])
-    overall = {key: sum(t[key] for t in per_opponent.values()) for key in ("strikes", "hits", "defended", "would_land")}
+    overall = {key: sum(t[key] for t in per_opponent.values()) for key in ("strikes", "hits", "defended", "would_land", "blocks", "block_clips")}
+    overall["captured_block_share"] = rate(overall["block_clips"], overall["blocks"])
     overall["hit_rate"] = rate(overall["hits"], overall["strikes"])
     overall["defended_rate"] = rate(overall["defended"], overall["would_land"])
     worst_hits = min(per_opponent.items(), key=lambda item: item[1]["hit_rate"] if item[1]["hit_rate"] is not None else 2.0)
@@ -120,7 +125,8 @@ def main():
     for opponent, total in per_opponent.items():
         print(f"  {opponent:36s} hits {fmt(total['hits'], total['strikes']):>11s}  defended {fmt(total['defended'], total['would_land']):>11s}",
               file=sys.stderr)
-    print(f"overall: hits {fmt(overall['hits'], overall['strikes'])}, defended {fmt(overall['defended'], overall['would_land'])}; "
+    print(f"overall: hits {fmt(overall['hits'], overall['strikes'])}, defended {fmt(overall['defended'], overall['would_land'])}, "
+          f"captured blocks {fmt(overall['block_clips'], overall['blocks'])}; "
           f"worst hits {worst_hits[0]}, worst defence {worst_defence[0]}", file=sys.stderr)
     print(json.dumps({"aim": args.aim, "distance_m": args.distance, "order_every_s": 2.0, "overall": overall,
                       "per_opponent": per_opponent, "bouts": rows}, indent=2))
