@@ -146,6 +146,8 @@ void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, doubl
         return; // no arm gets there, and the trunk may not lean: taken as it comes
     }
     m_move_start_s = t_s;
+    m_ramp_start_s = t_s;
+    m_ramp_from = 0.0;
     m_hold_until_s = t_s + time_to_impact + m_settings.hold_s;
     m_move_hand = static_cast<int>(&hand - m_hands.data());
     hand.strike.move = m_move;
@@ -199,7 +201,7 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
     // The move's weight: in over its ramp, held until after the hand's arrival, then out.
     if (m_move != DefenceMove::none) {
         if (t_s <= m_hold_until_s) {
-            m_weight = smoothstep((t_s - m_move_start_s) / m_ramp_s);
+            m_weight = m_ramp_from + (1.0 - m_ramp_from) * smoothstep((t_s - m_ramp_start_s) / m_ramp_s);
         } else {
             const double out = smoothstep((t_s - m_hold_until_s) / m_settings.release_s);
             m_weight = std::min(m_weight, 1.0 - out);
@@ -248,6 +250,17 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
                 std::array<bool, 2> same_arm{};
                 same_arm[m_arm] = true;
                 if (arrival > 0.0 && block_plan(hand, body, arrival, same_arm, wrist_target, arm)) m_wrist_target = wrist_target;
+                // The first estimate of its speed mixes in the draw back too: a fist faster than first seen reaches
+                // the meeting point sooner, and the forearm, shown from the next frame on, has to be there a frame
+                // before it. The ramp starts again from where it is, to end then.
+                const double to_meeting_s = (m_wrist_target - now).dot(hand.velocity) / (speed * speed) - dt;
+                const double ramp_end_s = m_ramp_start_s + m_ramp_s;
+                if (m_weight < 1.0 && t_s + to_meeting_s < ramp_end_s) {
+                    m_ramp_from = m_weight;
+                    m_ramp_start_s = t_s - dt; // this frame's weight is already a step in
+                    m_ramp_s = std::max(dt, to_meeting_s + dt);
+                    m_weight = m_ramp_from + (1.0 - m_ramp_from) * smoothstep(dt / m_ramp_s);
+                }
             }
             if (blocking) {
                 const double to_forearm = segment_distance(before, now, body.elbow[m_arm], body.wrist[m_arm]);

@@ -94,6 +94,48 @@ TEST_CASE("defence: a punch at the head is blocked with the arm on its side; wit
     CHECK(landed[1].outcome == UserStrikeOutcome::hit_by_user);
 }
 
+TEST_CASE("defence: a fist faster than first seen: the forearm is in place a frame before it reaches the meeting point", "[runtime]") {
+    // The user's left hand at the head from 0.8 m: seen while it speeds up (two frames at 4 m/s), then at 7 m/s. The
+    // first estimate of the time to impact is twice too long; the ramp must still end before the fist gets there.
+    const Eigen::Vector3d from(-0.15, 1.45, 0.8), to(0.0, 1.6, 0.0);
+    const Eigen::Vector3d direction = (to - from).normalized();
+    const auto fist = [&](double t) {
+        const double slow_s = 2.0 / 60.0, run = t - 0.2;
+        if (run <= 0.0) return from;
+        const double travelled = run <= slow_s ? run * 4.0 : slow_s * 4.0 + (run - slow_s) * 7.0;
+        return Eigen::Vector3d(from + direction * std::min(travelled, (to - from).norm()));
+    };
+    Defence defence;
+    DefenderBody body = guard_body();
+    double weight_before_meeting = -1.0;
+    std::vector<UserStrikeEvent> events;
+    for (int frame = 0; frame < 60; ++frame) {
+        const double t = frame / 60.0;
+        UserHands hands;
+        hands.present = {true, true};
+        hands.world[0] = fist(t);
+        hands.world[1] = Eigen::Vector3d(-0.2, 1.35, 0.7);
+        defence.update(t, hands, body, true);
+        for (const UserStrikeEvent& event : defence.events()) events.push_back(event);
+        defence.clear_events();
+        if (defence.block_weight() > 0.0) {
+            // The weight shown this frame, while the fist is still short of the meeting point next frame.
+            const Eigen::Vector3d target = defence.block_wrist_target();
+            if ((target - fist(t + 1.0 / 60.0)).dot(direction) > 0.0) weight_before_meeting = defence.block_weight();
+            const int arm = defence.block_arm();
+            const Eigen::Vector3d wrist = guard_body().wrist[arm] + defence.block_weight() * (target - guard_body().wrist[arm]);
+            body = guard_body();
+            body.wrist[arm] = wrist;
+            body.elbow[arm] = wrist - Eigen::Vector3d(0.0, 0.25, 0.0);
+        }
+    }
+    REQUIRE(events.size() == 2);
+    CHECK(events[0].move == DefenceMove::synthesized);
+    CHECK(events[0].hand_speed_mps < 4.0); // seen early, while it speeds up
+    CHECK(weight_before_meeting == Approx(1.0));
+    CHECK(events[1].outcome == UserStrikeOutcome::blocked);
+}
+
 TEST_CASE("defence: too late to block, it slips; wide or slow hands are not strikes", "[runtime]") {
     // From 0.3 m at 8 m/s: under 0.04 s to impact, no wrist gets there: a slip.
     Defence late;

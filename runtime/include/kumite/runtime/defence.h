@@ -161,6 +161,9 @@ private:
     int m_arm = 0;
     double m_weight = 0.0;
     double m_move_start_s = 0.0, m_ramp_s = 0.1, m_hold_until_s = 0.0, m_intercept_s = 0.0;
+    // The ramp in: from weight m_ramp_from to 1 over m_ramp_s from m_ramp_start_s (started again, shorter, when the
+    // fist turns out faster than first seen).
+    double m_ramp_start_s = 0.0, m_ramp_from = 0.0;
     bool m_block_started = false;
     double m_block_before_m = 0.3;   // the move's meeting point before the target
     double m_time_to_impact_s = 0.0; // at the move's start
