@@ -102,8 +102,8 @@ void Fighter::start_block_clip(const RestAnatomy& anatomy, const DefenderBody& d
     const LimbChain& chain = anatomy.limbs[limb];
     BlockClipQuery query;
     query.limb = limb;
-    // Against the head the forearm rises over it (age-uke); below the head it sweeps down (gedan-barai). A chest
-    // punch is mostly above a gedan-barai's reach: those fall back to the synthesized block.
+    // Against the head the forearm rises over it (age-uke); below the head it sweeps down (gedan-barai), meeting a
+    // chest punch on its way down.
     query.kind = m_defence.move_strike().at_head ? StrikeKind::rising : StrikeKind::downward;
     if (!m_defence.course_point(m_defence.settings().block_clip_before_m, query.contact_target, query.time_s)) return;
     query.heading_yaw_rad = m_heading.yaw_rad;
@@ -116,11 +116,11 @@ void Fighter::start_block_clip(const RestAnatomy& anatomy, const DefenderBody& d
     if (m_block_choice.contact_error_m > m_defence.settings().block_clip_reach * chain.length()) return;
     // And one whose elbow, bent as the clip bends it, cannot put the forearm there (the course too close to the
     // body for that arm's shape) is not played either.
-    const auto at_hit = m_block_clips.arm_points(anatomy, limb, m_block_choice.clip, m_block_choice.hit_frame, query.shoulder, m_heading.yaw_rad,
+    const auto at_meet = m_block_clips.arm_points(anatomy, limb, m_block_choice.clip, m_block_choice.meet_frame, query.shoulder, m_heading.yaw_rad,
                                                  Eigen::Vector3d::Zero());
-    const Eigen::Vector3d bend = limb_bend_direction(query.shoulder, at_hit.elbow, at_hit.wrist), reference = limb_swivel_reference(m_mir, limb);
-    const Eigen::Vector3d offset = contact_offset(chain, query.shoulder, at_hit.wrist, bend, reference, query.contact_target);
-    const Eigen::Vector3d asked = at_hit.wrist + offset;
+    const Eigen::Vector3d bend = limb_bend_direction(query.shoulder, at_meet.elbow, at_meet.wrist), reference = limb_swivel_reference(m_mir, limb);
+    const Eigen::Vector3d offset = contact_offset(chain, query.shoulder, at_meet.wrist, bend, reference, query.contact_target);
+    const Eigen::Vector3d asked = at_meet.wrist + offset;
     const TwoBoneSolution placed = two_bone_ik(query.shoulder, asked, chain.upper_length, chain.lower_length,
                                                swivel_keeping_bend(query.shoulder, asked, bend, reference, 0.0), reference);
     const Eigen::Vector3d contact = placed.extremity + k_block_contact_fraction * (placed.middle - placed.extremity);
@@ -172,13 +172,13 @@ void Fighter::apply_defence() {
     Eigen::Vector3d asked = Eigen::Vector3d::Zero(); // where the blocking wrist is asked to go
     if (block > 0.0 && m_defence.move() == DefenceMove::block_clip) {
         // The captured block's arm at the played frame over the shown pose, its wrist offset so that the forearm's
-        // contact meets the course at the clip's hit frame (the offset grows with the clip's progress).
+        // contact meets the course at the clip's meeting frame (the offset grows with the clip's progress).
         const int side = m_defence.block_arm();
         const int limb = side == 0 ? int(Limb::arm_l) : int(Limb::arm_r);
         const BlockClipChoice& choice = m_block_choice;
-        const double lead = std::max(1, choice.hit_frame - choice.start_frame);
-        // Timed by the fist: the clip's rest up to its hit should end a little before the fist reaches the meeting
-        // point (its course is known better every frame), at 0.4 to 1.5 times the captured speed.
+        const double lead = std::max(1, choice.meet_frame - choice.start_frame);
+        // Timed by the fist: the clip's rest up to the meeting should end a little before the fist reaches the meeting
+        // point (its course is known better every frame), at 0.4 to 3 times the captured speed.
         const double ft = m_block_clips.frame_time_s();
         const double remaining_clip_s = (lead - m_block_played) * ft, fist_s = m_defence.time_to_block_point();
         const double rate = std::clamp(remaining_clip_s / std::max(0.8 * fist_s, 1e-3), 0.4, 3.0);
@@ -187,9 +187,9 @@ void Fighter::apply_defence() {
         const double played = m_block_played;
         const Eigen::Vector3d shoulder = before[anatomy.limbs[limb].root];
         m_block_clips.apply(m_defended_frame, anatomy, limb, choice.clip, choice.start_frame + played, block, shoulder, m_heading.yaw_rad);
-        // The offset at the hit frame, with the elbow bending as the clip's does there (as it will be decoded).
-        const auto at_hit = m_block_clips.arm_points(anatomy, limb, choice.clip, choice.hit_frame, shoulder, m_heading.yaw_rad, Eigen::Vector3d::Zero());
-        const Eigen::Vector3d offset = contact_offset(anatomy.limbs[limb], shoulder, at_hit.wrist, limb_bend_direction(shoulder, at_hit.elbow, at_hit.wrist),
+        // The offset at the meeting frame, with the elbow bending as the clip's does there (as it will be decoded).
+        const auto at_meet = m_block_clips.arm_points(anatomy, limb, choice.clip, choice.meet_frame, shoulder, m_heading.yaw_rad, Eigen::Vector3d::Zero());
+        const Eigen::Vector3d offset = contact_offset(anatomy.limbs[limb], shoulder, at_meet.wrist, limb_bend_direction(shoulder, at_meet.elbow, at_meet.wrist),
                                                       limb_swivel_reference(m_defended_frame, limb), m_defence.block_wrist_target());
         pins.pinned[limb] = false;
         pins.extremity_offset_world[limb] = block * smoothstep(played / lead) * offset;

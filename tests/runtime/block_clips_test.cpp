@@ -45,3 +45,61 @@ TEST_CASE("block_clips: the clip's arm placed on a frame is where the decoder pu
     CHECK(checked >= 10);
     CHECK(worst < 1e-4);
 }
+
+TEST_CASE("block_clips: a course in front of the chest is met mid-sweep by a downward block, where the choice says", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = test::reference_database();
+    if (!content) return;
+    const MotionDatabaseView db = content->view();
+    const BlockClips blocks(db);
+    test::StandingCharacter character("brawler", db);
+    const RestAnatomy& anatomy = character.rig->anatomy();
+    MirDecoder decoder(character.skeleton(), anatomy, {});
+    Pose pose;
+    decoder.decode(pose, character.mir);
+    const auto positions = decoder.model_positions();
+    const HeadingFrame& heading = character.query.heading;
+    const double yaw = heading.yaw_rad;
+    const Eigen::Vector3d forward = heading.to_world(Eigen::Vector3d::UnitZ()) - heading.origin; // +Z ahead, +X the left
+    const Eigen::Vector3d left = heading.to_world(Eigen::Vector3d::UnitX()) - heading.origin;
+    const Eigen::Vector3d chest = positions[anatomy.body_map.joint(BodyPart::chest)];
+    int before_hit = 0, checked = 0;
+    double worst = 0.0, worst_estimate = 0.0;
+    for (const int limb : {int(Limb::arm_l), int(Limb::arm_r)}) {
+        const LimbChain& chain = anatomy.limbs[limb];
+        for (const double across : {-0.1, 0.0, 0.1}) {
+            for (const double ahead : {0.3, 0.4}) {
+                // A punch at the chest, met 15 cm short of it: in front of the chest, at its height.
+                BlockClipQuery query;
+                query.limb = limb;
+                query.kind = StrikeKind::downward;
+                query.contact_target = chest + ahead * forward + across * left;
+                query.time_s = 0.15;
+                query.heading_yaw_rad = yaw;
+                query.shoulder = positions[chain.root];
+                query.wrist = positions[chain.extremity];
+                query.upper_length = chain.upper_length;
+                query.lower_length = chain.lower_length;
+                BlockClipChoice choice;
+                REQUIRE(blocks.choose(query, anatomy, choice));
+                const DbClip& clip = db.clips[choice.clip];
+                CHECK(clip.strike_kind() == StrikeKind::downward);
+                CHECK(clip.side == std::uint32_t(limb == int(Limb::arm_l) ? Side::left : Side::right));
+                CHECK(choice.start_frame < choice.meet_frame);
+                CHECK(choice.meet_frame <= int(clip.hit_frame));
+                CHECK((choice.meet_frame - choice.start_frame) * blocks.frame_time_s() <= query.time_s + 1e-9);
+                before_hit += choice.meet_frame < int(clip.hit_frame);
+                // The choice's estimate (a unit arm, placed once) against the arm placed exactly at that frame.
+                const auto at_meet = blocks.arm_points(anatomy, limb, choice.clip, choice.meet_frame, query.shoulder, yaw, Eigen::Vector3d::Zero());
+                const double exact = (at_meet.contact - query.contact_target).norm();
+                worst = std::max(worst, exact);
+                worst_estimate = std::max(worst_estimate, std::abs(exact - choice.contact_error_m));
+                ++checked;
+            }
+        }
+    }
+    CHECK(checked == 12);
+    CHECK(before_hit >= 9); // a gedan-barai ends low: the chest is crossed on the way down
+    CHECK(worst < 0.5 * anatomy.limbs[int(Limb::arm_l)].length());
+    CHECK(worst_estimate < 0.03);
+    INFO("worst contact error " << worst << " m");
+}

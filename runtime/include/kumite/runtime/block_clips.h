@@ -2,15 +2,19 @@
 // Captured blocks for the defence (defence.h): the database's `block` clips (age-uke, gedan-barai, ...), chosen
 // for a user's strike and played on the fighter's blocking arm over whatever the rest of the body is doing.
 //
-// Choice. A candidate is a start frame of a block clip of the blocking arm's side (and of the wanted kind when the
-// database holds one: rising against the head, downward below it) whose lead to the clip's hit frame fits in the
-// time the fist leaves (played at most at the captured speed, at least at 0.4 of it). Its score is
-//     d = |wrist at the start - wrist now| / arm + |contact at the hit - where the forearm must meet the course| / arm
+// Choice. A candidate is a meeting frame of a block clip of the blocking arm's side (and of the wanted kind when
+// the database holds one: rising against the head, downward below it) and a start frame before it whose lead fits
+// in the time the fist leaves (played at most at the captured speed, at least at 0.4 of it). The meeting frame is
+// any frame of the clip's last sweep, from a third of the way in to its annotated hit: a block meets the fist where
+// its sweep crosses the course (a gedan-barai's sweep crosses the chest on its way down, an age-uke's the face on
+// its way up), and holds there. Its score is
+//     d = |wrist at the start - wrist now| / arm + |contact at the meeting - where the forearm must meet the course| / arm
 // with both clip points placed on the fighter's arm as it is now: the clip's arm as captured relative to its
 // shoulder, turned from the clip's heading to the fighter's and scaled by arm length (MIR, mir.h), the elbow by
 // two-bone IK with the clip's swivel; the contact is a third of the way from the wrist to the elbow
 // (contact_point.h). Headings, not the trunk's part frames, carry the arm over: they mean the same on every
-// skeleton, where a clavicle's frame may be rolled differently on another.
+// skeleton, where a clavicle's frame may be rolled differently on another. The clips' points are placed once, at
+// construction, on an arm of unit length (upper and lower arm alike): a choice compares vectors, nothing else.
 //
 // Playback. The arm's extremity, swivel and the upper arm's, forearm's and hand's frames are the clip's at the
 // played frame, turned onto the fighter's heading, blended over the shown pose by the defence's weight; the wrist is
@@ -37,10 +41,10 @@ struct BlockClipQuery {
 struct BlockClipChoice {
     int clip = -1;
     int start_frame = 0;
-    int hit_frame = 0;
+    int meet_frame = 0;       // where the forearm meets the course (a frame of the clip's last sweep), held after
     double rate = 1.0;        // clip seconds per second (<= 1: never faster than captured)
     double score = 0.0;
-    double contact_error_m = 0.0;   // the clip's contact at the hit, on the fighter, to the target (before the offset)
+    double contact_error_m = 0.0;   // the clip's contact at the meeting frame, on the fighter, to the target (before the offset)
     double clip_arm_speed_mps = 0.0; // the fastest the clip moves the wrist or elbow relative to the shoulder, as played
 };
 
@@ -77,8 +81,22 @@ private:
     };
     ArmFrame arm_frame(int clip, double frame, int limb, int parent_part) const;
 
+    // A block clip's arm placed once on a unit arm at the origin, in the clip's heading frame, every frame, for
+    // either parent part of the extremity (0: the clavicle, 1: the chest: skeletons without clavicles).
+    struct Placed {
+        Eigen::Vector3f wrist, contact;
+    };
+    struct Clip {
+        int index = 0;         // in the database
+        int first_placed = 0;  // into m_placed: frame f, parent k at first_placed + 2 * f + k
+        int meet_from = 0;     // the first frame a meeting may be at (a third into the last sweep)
+        std::array<double, 2> arm_speed_per_m{}; // the clip's fastest wrist or elbow move per second, per metre of arm
+    };
+    const Placed& placed(const Clip& clip, int frame, int parent) const { return m_placed[clip.first_placed + 2 * frame + parent]; }
+
     const MotionDatabaseView& m_db;
-    std::vector<int> m_clips; // database indices of the block clips
+    std::vector<Clip> m_clips;
+    std::vector<Placed> m_placed;
     double m_frame_time_s = 1.0 / 30.0;
 };
 
