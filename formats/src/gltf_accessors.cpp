@@ -4,11 +4,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <optional>
 
 namespace kumite::gltf {
 namespace {
+
+// A joint id as read (any number a hostile accessor holds: huge, fractional, not finite), for a message.
+std::string joint_id_text(double id) {
+    if (std::isfinite(id) && std::abs(id) < 1e15 && id == std::floor(id)) return std::to_string(static_cast<long long>(id));
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", id);
+    return text;
+}
 
 // Images are not decoded: a character's look is its base colour.
 bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*) { return true; }
@@ -189,9 +198,10 @@ Result<void> read_skinned_primitives(const tinygltf::Model& model, int skin_inde
                     const double weight = weights->value(v, k);
                     if (!std::isfinite(weight) || weight < 0.0) return fail(where + " WEIGHTS_0: vertex " + std::to_string(v) + " has a weight that is negative or not finite");
                     const double raw = joint_ids->value(v, k);
-                    if (weight > 0.0 && (raw < 0.0 || raw >= joints)) {
-                        return fail(where + " JOINTS_0: vertex " + std::to_string(v) + " names joint " + std::to_string(static_cast<long long>(raw)) +
-                                    " of a skin with " + std::to_string(joints));
+                    // (Not finite or not below the joint count: refused before any cast, which would be undefined.)
+                    if (weight > 0.0 && !(raw >= 0.0 && raw < joints)) {
+                        return fail(where + " JOINTS_0: vertex " + std::to_string(v) + " names joint " + joint_id_text(raw) + " of a skin with " +
+                                    std::to_string(joints));
                     }
                     ids[k] = weight > 0.0 ? static_cast<std::uint16_t>(skeleton_of_skin[static_cast<int>(raw)]) : 0;
                     w[k] = static_cast<float>(weight);
