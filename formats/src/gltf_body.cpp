@@ -88,9 +88,9 @@ bool rehang_hips(const Skeleton& skeleton, const BodyMap& map, const Built& buil
     return true;
 }
 
-BodyMap vrm_body_map(const VrmHumanoid& vrm, const Built& built, const Skeleton& skeleton, const std::vector<int>& skin_nodes,
-                     std::vector<std::string>& warnings) {
-    BodyMap map = detect_body_map(skeleton);
+// The body map by names and structure, overridden by the VRM humanoid's own bones where they are joints of the body.
+BodyMap vrm_body_map(const VrmHumanoid& vrm, const Built& built, const std::vector<int>& skin_nodes, std::vector<std::string>& warnings) {
+    BodyMap map = detect_body_map(built.skeleton);
     for (const VrmBone& bone : vrm.bones) {
         const auto at = std::find(skin_nodes.begin(), skin_nodes.end(), bone.node);
         const int skin = at == skin_nodes.end() ? -1 : int(at - skin_nodes.begin());
@@ -123,7 +123,7 @@ BodySkeleton body_skeleton(const SkinJoints& joints, const std::vector<double>& 
     }
     BodySkeleton body;
     body.warnings = std::move(rig.warnings);
-    if (vrm) map = vrm_body_map(*vrm, built, built.skeleton, skin_nodes, body.warnings);
+    if (vrm) map = vrm_body_map(*vrm, built, skin_nodes, body.warnings);
     body.skeleton = std::move(built.skeleton);
     body.skeleton_of_skin = std::move(built.skeleton_of_skin);
     body.body_map = map;
