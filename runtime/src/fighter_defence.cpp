@@ -131,6 +131,7 @@ void Fighter::start_block_clip(const RestAnatomy& anatomy, const DefenderBody& d
 }
 
 void Fighter::apply_defence() {
+    m_defence_shown = false;
     const double block = m_defence.block_weight(), slip = m_defence.slip_weight();
     if (block <= 0.0 && slip <= 0.0) return;
     Body& body = *m_bodies[m_character];
@@ -215,6 +216,9 @@ void Fighter::apply_defence() {
     }
     body.decoder.decode(m_pose, m_defended_frame, pins);
     m_shown_by_adapter = false;
+    // What is shown, for a recording (mir()): m_mir stays the undefended frame the next blend starts from.
+    body.encoder.encode(m_shown_mir, m_pose.view());
+    m_defence_shown = true;
     const auto after = body.decoder.model_positions();
     unsigned violations = trunk_turn(anatomy, body.decoder.model_rotations()) > JointLimits{}.trunk_turn_rad ? k_trunk_violation : 0u;
     for (int side = 0; side < 2; ++side) {

@@ -128,7 +128,9 @@ TEST_CASE("fighter: a punching user's strikes are blocked or slipped with defenc
             Bout b(content->view(), character, settings);
             SimulatedUser user(SimulatedKind::punch, 4);
             const RestAnatomy& anatomy = b.brawler.rig->anatomy();
-            double bone_error = 0.0;
+            MirDecoder recorder(b.brawler.skeleton(), anatomy, {}); // as kumite play --record decodes mir()
+            Pose recorded;
+            double bone_error = 0.0, recorded_error = 0.0;
             for (int frame = 0; frame < 30 * 60; ++frame) {
                 const double t = frame / 60.0;
                 user.set_opponent(b.fighter->part_position(BodyPart::head), b.fighter->part_position(BodyPart::chest));
@@ -141,6 +143,13 @@ TEST_CASE("fighter: a punching user's strikes are blocked or slipped with defenc
                         const LimbChain& limb = anatomy.limbs[int(arm)];
                         bone_error = std::max(bone_error, std::abs((positions[limb.middle] - positions[limb.root]).norm() - limb.upper_length));
                         bone_error = std::max(bone_error, std::abs((positions[limb.extremity] - positions[limb.middle]).norm() - limb.lower_length));
+                    }
+                    // A recording shows the block: the fighter's mir() decodes to the arms shown.
+                    recorder.decode(recorded, b.fighter->mir());
+                    const auto replayed = recorder.model_positions();
+                    for (const Limb arm : {Limb::arm_l, Limb::arm_r}) {
+                        const int wrist = anatomy.limbs[int(arm)].extremity;
+                        recorded_error = std::max(recorded_error, (replayed[wrist] - positions[wrist]).norm());
                     }
                 }
                 for (const FighterEvent& event : b.fighter->events()) b.events.push_back(event);
@@ -168,6 +177,7 @@ TEST_CASE("fighter: a punching user's strikes are blocked or slipped with defenc
                 CHECK(violations == 0);
                 CHECK(foot_shift < 1e-6);
                 CHECK(bone_error < 1e-9);
+                CHECK(recorded_error < 1e-3);
                 // Punches at the head are met by captured rising blocks (block_clips.h), not synthesized ones.
                 INFO(captured_at_head << " of " << head_blocks << " blocks at the head captured");
                 CHECK(captured_at_head >= 0.7 * head_blocks);

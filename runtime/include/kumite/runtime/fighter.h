@@ -173,7 +173,8 @@ public:
     bool may_plan() const { return m_may_plan; }
     int character() const { return m_character; }
     const Pose& pose() const { return m_pose; }              // on the current character
-    const MirFrame& mir() const { return m_mir; }            // the pose in the MIR (to record it on any skeleton)
+    // The pose shown, in the MIR (to record it on any skeleton): a block's or slip's edits included.
+    const MirFrame& mir() const { return m_defence_shown ? m_shown_mir : m_mir; }
     std::span<const Eigen::Vector3d> positions() const;      // model positions of pose()
     std::span<const Eigen::Quaterniond> rotations() const;   // model rotations of pose()
     Eigen::Vector3d part_position(BodyPart part) const;      // of a body part of the current character, world
@@ -258,6 +259,8 @@ private:
     double m_block_played = 0.0;         // clip frames of the captured block played since its start frame
     double m_block_played_s = 0.0;       // when
     MirFrame m_defended_frame;           // scratch: the shown frame with the defence's edits
+    MirFrame m_shown_mir;                // the pose shown with the defence's edits, encoded again (mir())
+    bool m_defence_shown = false;        // this frame's pose carries the defence's edits
     LimbPins m_defence_pins;
     int m_defence_violations = 0;        // joint-limit violations of the defence's edits, since the last user strike ended
     double m_defence_foot_shift_m = 0.0; // how far they moved a foot, since then
