@@ -87,7 +87,7 @@ Fighter::Fighter(const MotionDatabaseView& database, const Retriever& retriever,
         body->encoder.encode(m_mir, m_pose.view());
         body->decoder.decode(m_pose, m_mir);
         m_shown_by_adapter = false;
-        m_defended_frame = m_mir;
+        m_defended_frame = m_shown_mir = m_mir;
         body->adapter.begin({first_clip_of(database, "punch") >= 0 ? first_clip_of(database, "punch") : 0, 0, 0, {}, {}}, m_mir,
                             {true, true}, {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
     }
