@@ -196,12 +196,14 @@ void Defence::note_arm_speed(double speed_mps) {
     strike.arm_speed_mps = std::max(strike.arm_speed_mps, speed_mps);
 }
 
+double Defence::ramp_weight(double t_s) const { return m_ramp_from + (1.0 - m_ramp_from) * smoothstep((t_s - m_ramp_start_s) / m_ramp_s); }
+
 void Defence::update(double t_s, const UserHands& hands, const DefenderBody& body, const Allowed& allowed) {
     m_block_started = false;
     // The move's weight: in over its ramp, held until after the hand's arrival, then out.
     if (m_move != DefenceMove::none) {
         if (t_s <= m_hold_until_s) {
-            m_weight = m_ramp_from + (1.0 - m_ramp_from) * smoothstep((t_s - m_ramp_start_s) / m_ramp_s);
+            m_weight = ramp_weight(t_s);
         } else {
             const double out = smoothstep((t_s - m_hold_until_s) / m_settings.release_s);
             m_weight = std::min(m_weight, 1.0 - out);
@@ -259,7 +261,7 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
                     m_ramp_from = m_weight;
                     m_ramp_start_s = t_s - dt; // this frame's weight is already a step in
                     m_ramp_s = std::max(dt, to_meeting_s + dt);
-                    m_weight = m_ramp_from + (1.0 - m_ramp_from) * smoothstep(dt / m_ramp_s);
+                    m_weight = ramp_weight(t_s);
                 }
             }
             if (blocking) {

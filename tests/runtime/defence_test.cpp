@@ -25,19 +25,19 @@ DefenderBody guard_body() {
     return body;
 }
 
-// Runs a straight thrust of the user's hand `side` from `from` to `to` at `speed`, then holds; the fighter's
-// blocking forearm is put where the defence asks (wrist at the target, elbow 0.25 m below) when `follow`.
-std::vector<UserStrikeEvent> thrust(Defence& defence, int side, const Eigen::Vector3d& from, const Eigen::Vector3d& to, double speed, bool follow) {
+// Runs the user's hand `side` along `path(t)` for a second at 60 Hz (the other held still); the fighter's blocking
+// forearm is put where the defence asks (wrist at the target, elbow 0.25 m below) when `follow`. `seen(t)` is
+// called after each frame's update.
+template <class Path, class Seen>
+std::vector<UserStrikeEvent> run_hand(Defence& defence, int side, Path&& path, bool follow, Seen&& seen) {
     std::vector<UserStrikeEvent> events;
     DefenderBody body = guard_body();
-    const double out_s = (to - from).norm() / speed;
     for (int frame = 0; frame < 60; ++frame) {
         const double t = frame / 60.0;
-        const double thrust = t - 0.2; // still for 0.2 s first
         UserHands hands;
         hands.present = {true, true};
         hands.world[1 - side] = Eigen::Vector3d(side == 0 ? 0.2 : -0.2, 1.35, 0.7);
-        hands.world[side] = thrust <= 0.0 ? from : thrust >= out_s ? to : Eigen::Vector3d(from + (to - from) * (thrust / out_s));
+        hands.world[side] = path(t);
         if (follow && defence.block_weight() > 0.0) {
             const int arm = defence.block_arm();
             const Eigen::Vector3d wrist = body.wrist[arm] + defence.block_weight() * (defence.block_wrist_target() - body.wrist[arm]);
@@ -48,8 +48,19 @@ std::vector<UserStrikeEvent> thrust(Defence& defence, int side, const Eigen::Vec
         defence.update(t, hands, body, true);
         for (const UserStrikeEvent& event : defence.events()) events.push_back(event);
         defence.clear_events();
+        seen(t);
     }
     return events;
+}
+
+// A straight thrust of the user's hand `side` from `from` to `to` at `speed` after 0.2 s still, then held.
+std::vector<UserStrikeEvent> thrust(Defence& defence, int side, const Eigen::Vector3d& from, const Eigen::Vector3d& to, double speed, bool follow) {
+    const double out_s = (to - from).norm() / speed;
+    const auto path = [&](double t) {
+        const double thrust = t - 0.2;
+        return thrust <= 0.0 ? from : thrust >= out_s ? to : Eigen::Vector3d(from + (to - from) * (thrust / out_s));
+    };
+    return run_hand(defence, side, path, follow, [](double) {});
 }
 
 } // namespace
@@ -106,29 +117,13 @@ TEST_CASE("defence: a fist faster than first seen: the forearm is in place a fra
         return Eigen::Vector3d(from + direction * std::min(travelled, (to - from).norm()));
     };
     Defence defence;
-    DefenderBody body = guard_body();
     double weight_before_meeting = -1.0;
-    std::vector<UserStrikeEvent> events;
-    for (int frame = 0; frame < 60; ++frame) {
-        const double t = frame / 60.0;
-        UserHands hands;
-        hands.present = {true, true};
-        hands.world[0] = fist(t);
-        hands.world[1] = Eigen::Vector3d(-0.2, 1.35, 0.7);
-        defence.update(t, hands, body, true);
-        for (const UserStrikeEvent& event : defence.events()) events.push_back(event);
-        defence.clear_events();
-        if (defence.block_weight() > 0.0) {
-            // The weight shown this frame, while the fist is still short of the meeting point next frame.
-            const Eigen::Vector3d target = defence.block_wrist_target();
-            if ((target - fist(t + 1.0 / 60.0)).dot(direction) > 0.0) weight_before_meeting = defence.block_weight();
-            const int arm = defence.block_arm();
-            const Eigen::Vector3d wrist = guard_body().wrist[arm] + defence.block_weight() * (target - guard_body().wrist[arm]);
-            body = guard_body();
-            body.wrist[arm] = wrist;
-            body.elbow[arm] = wrist - Eigen::Vector3d(0.0, 0.25, 0.0);
+    const std::vector<UserStrikeEvent> events = run_hand(defence, 0, fist, true, [&](double t) {
+        // The weight shown this frame, while the fist is still short of the meeting point next frame.
+        if (defence.block_weight() > 0.0 && (defence.block_wrist_target() - fist(t + 1.0 / 60.0)).dot(direction) > 0.0) {
+            weight_before_meeting = defence.block_weight();
         }
-    }
+    });
     REQUIRE(events.size() == 2);
     CHECK(events[0].move == DefenceMove::synthesized);
     CHECK(events[0].hand_speed_mps < 4.0); // seen early, while it speeds up

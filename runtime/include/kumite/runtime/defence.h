@@ -153,6 +153,7 @@ private:
     bool block_plan(const Hand& hand, const DefenderBody& body, double time_to_impact, const std::array<bool, 2>& arms,
                     Eigen::Vector3d& wrist_target, int& arm) const;
     void end_strike(double t_s, Hand& hand, UserStrikeOutcome outcome);
+    double ramp_weight(double t_s) const; // the move's weight at t_s while it ramps in
 
     DefenceSettings m_settings;
     std::array<Hand, 2> m_hands;
