@@ -63,6 +63,14 @@ ADDED = {
     ("hachaj-kata/pinian_nidan.bvh", "hand_r", 2295): "straight",
     ("hachaj-kata/pinian_shodan.bvh", "hand_r", 544): "straight",
     ("hachaj-kata/pinian_shodan.bvh", "hand_r", 2656): "straight",
+    # Head-level punches the rule took for rising blocks on their way up (the forearm tilted up, the fist at the
+    # head's height): looked at over the 0.5 s after the hit, the arm stays straight and held out in front at head
+    # height, as the kata's middle punches are held at the chest, and never bends up over the head as an age-uke
+    # ends (kumite suggest proposed them; accepted on a filmstrip of each).
+    ("hachaj-kata/pinian_nidan.bvh", "hand_l", 1831): "straight",
+    ("hachaj-kata/pinian_nidan.bvh", "hand_l", 2192): "straight",
+    ("hachaj-kata/fukyugata_ni.bvh", "hand_l", 2698): "straight",
+    ("hachaj-kata/1-pinian_shodan.bvh", "hand_r", 1146): "straight",
     # Fukyugata Ni (Gekisai Dai Ichi) follows each front kick with an elbow strike: the elbow driven up in front to
     # head height, the fist folded by the ear, 0.6-1.0 s after the kick of the same side.
     ("hachaj-kata/fukyugata_ni.bvh", "forearm_l", 1906): "elbow",
