@@ -16,10 +16,14 @@ constexpr double k_min_gap_s = 0.3;
 constexpr double k_span_s = 1.0;
 constexpr double k_kick_extension = 0.85;  // leg straightness (hip-ankle over leg length) that makes a raised foot a kick
 constexpr double k_knee_rise = 0.3;        // knee above its standing height, in leg lengths, for a knee strike
+constexpr double k_knee_speed = 3.5;       // leg lengths per second the knee reaches within 0.3 s before a knee strike's hit
 constexpr double k_block_above_head = 0.3; // a hand this far (arm lengths) above the head is blocking, not punching
 constexpr double k_elbow_rise = 0.8;       // how far an elbow strike lifts the elbow (upper-arm lengths) within 0.6 s
 constexpr double k_elbow_folded_deg = 84.0; // an elbow opened wider than this, its wrist up by the head, is a rising block
 constexpr double k_punch_rise = 0.3;       // how much a punch's extension grows in the 0.6 s before its hit
+constexpr double k_thrust_window_s = 0.1;  // how long before the hit a punch's fist is seen travelling along its forearm
+constexpr double k_punch_thrust = 0.2;     // cosine between that travel and the forearm, at least
+constexpr double k_punch_forearm_down = -0.45; // sine of the forearm's slope below which it points down (27 degrees): a low sweep
 
 using LimbTrack = std::vector<std::array<Eigen::Vector3d, k_limb_count>>; // [frame][limb] one joint of each limb
 
@@ -212,6 +216,9 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
             const bool wrist_above = extremity[peak][limb].y() > head_y[peak] + 0.1;
             if ((folded_deg >= k_elbow_folded_deg && wrist_up) || wrist_above) continue; // a rising block
             if (folded_deg >= 110.0) continue;                          // an arm raised open: a wave, a reach
+            // Driven forward, at what is in front: an elbow swung back behind its shoulder (along the hips'
+            // heading) is pulled back (a kata's hikite), not striking.
+            if ((middle[hit][limb] - root[hit][limb]).dot(hips_forward[hit]) < 0.0) continue;
             if (already_found(strikes, StrikeSemantics::elbow, part, hit, 2 * min_gap)) continue; // a second top of one rise
             add(StrikeSemantics::elbow, part, side, hit, lift, 0.5 + 0.5 * std::min(1.0, (lift[peak] - lift[valley(lift, peak, -1, rise_window)] - k_elbow_rise) / 0.5));
         }
@@ -265,6 +272,18 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
             block.last_frame = std::min(frames - 1, hit + (hit - start));
         }
     };
+    // A punch drives the fist along the forearm: over the last k_thrust_window_s before the hit the fist travels
+    // within ~78 degrees of where the forearm points (cosine k_punch_thrust). A knife-hand, a back-fist or a block
+    // that circles over the head swings the fist across the forearm instead.
+    const int thrust_window = std::max(1, static_cast<int>(std::lround(k_thrust_window_s / dt)));
+    auto thrust_along_forearm = [&](int limb, int hit) {
+        const int from = std::max(0, hit - thrust_window);
+        const Eigen::Vector3d travel = extremity[hit][limb] - extremity[from][limb];
+        Eigen::Vector3d forearm = Eigen::Vector3d::Zero();
+        for (int f = from; f <= hit; ++f) forearm += (extremity[f][limb] - middle[f][limb]).normalized();
+        if (travel.norm() < 1e-9 || forearm.norm() < 1e-9) return false;
+        return travel.normalized().dot(forearm.normalized()) >= k_punch_thrust;
+    };
     for (int limb = 0; limb < k_limb_count; ++limb) {
         const bool arm = limb < 2;
         const Side side = limb % 2 == 0 ? Side::left : Side::right;
@@ -298,6 +317,10 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
                 int hit = peak;
                 while (hit > 0 && signal[hit - 1] >= signal[peak] - 0.02 / length) --hit;
                 if (already_found(strikes, StrikeSemantics::punch, parts[2], hit, min_gap)) continue; // a second peak of one held punch
+                if (!thrust_along_forearm(limb, hit)) continue;
+                // A forearm pointing steeply down at the hit sweeps low (a downward block), it is not thrust at a target.
+                const Eigen::Vector3d forearm = extremity[hit][limb] - middle[hit][limb];
+                if (forearm.y() < k_punch_forearm_down * forearm.norm()) continue;
                 const double strength = std::min((signal[peak] - 0.78) / 0.22, (reach[peak][limb] - 0.6) / 0.6);
                 add(StrikeSemantics::punch, parts[2], side, hit, signal, 0.5 + 0.5 * strength);
             }
@@ -339,6 +362,8 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
                 if (knee_rise[f] > knee_rise[hit]) hit = f;
             }
             if (knee_rise[hit] < k_knee_rise) continue; // a high step, not a strike
+            // A knee strike is driven up fast; a knee lifted into a stance (a kata's crane, a turn) rises slowly.
+            if (fastest_over(middle, limb, hit, speed_window, dt, anatomy.leg_length) < k_knee_speed) continue;
             add(StrikeSemantics::knee, parts[1], side, hit, knee_rise, 0.5 + 0.5 * std::min(1.0, (knee_rise[hit] - k_knee_rise) / 0.3));
         }
     }

@@ -186,3 +186,38 @@ TEST_CASE("strike_detection: karate techniques one per file: kicks, knees, elbow
         }
     }
 }
+
+TEST_CASE("strike_detection: in whole kata, arms swung across the forearm or down and knees lifted slowly are not strikes",
+          "[core][corpus]") {
+    // Fukyugata Ni (100 fps, as the folder's other files): looked at frame by frame. The left fist circles over the
+    // head before 696 and 1942 (blocks) and sweeps down to 2314 (a downward block); the knee is lifted slowly at
+    // 2129 and 2832 (stance changes); the left elbow is pulled back behind the shoulder at 3076 (hikite). The left
+    // fist is thrust out at head height at 2698 and at the chest at 1082: punches.
+    const std::filesystem::path path = kumite::test::mocap_root() / "hachaj-kata/fukyugata_ni.bvh";
+    if (!std::filesystem::exists(path)) {
+        WARN("missing " << path);
+        return;
+    }
+    Result<BvhFile> file = bvh_read_file(path);
+    REQUIRE(file.has_value());
+    Result<RestAnatomy> anatomy = rest_anatomy_build(file->clip, file->body_map);
+    REQUIRE(anatomy.has_value());
+    const std::vector<StrikeSuggestion> strikes = strikes_detect(file->clip, *anatomy);
+    auto near = [&](StrikeSemantics semantics, int frame) {
+        return std::any_of(strikes.begin(), strikes.end(), [&](const StrikeSuggestion& strike) {
+            return strike.semantics == semantics && std::abs(strike.hit_frame - frame) <= 15;
+        });
+    };
+    for (int frame : {696, 1942, 2314}) {
+        INFO("no punch near frame " << frame);
+        CHECK_FALSE(near(StrikeSemantics::punch, frame));
+    }
+    for (int frame : {2129, 2832}) {
+        INFO("no knee strike near frame " << frame);
+        CHECK_FALSE(near(StrikeSemantics::knee, frame));
+    }
+    CHECK_FALSE(near(StrikeSemantics::elbow, 3076));
+    CHECK(near(StrikeSemantics::punch, 2698));
+    CHECK(near(StrikeSemantics::punch, 1082));
+    CHECK(near(StrikeSemantics::elbow, 1906)); // the elbow strike after the left front kick
+}
