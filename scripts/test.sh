@@ -6,7 +6,8 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/setup.sh" --test
 "$root/scripts/fetch_mocap.sh"
 # Optimised as the developer build (-O2, asserts off) but without debug info: a third less compile time on the
-# heaviest files, and CI stays well under its 20 minutes. A crash under ctest is reproduced with scripts/build.sh.
+# heaviest files (a clean clone's run took 21 minutes on two cores). A crash under ctest is reproduced with
+# scripts/build.sh.
 "$root/scripts/build.sh" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG"
 
 # The fuzz targets, when Clang and libFuzzer are there: every seed, then 30 s on the BVH reader, 15 s on the
