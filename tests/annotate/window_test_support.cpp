@@ -4,6 +4,7 @@
 
 #include <QElapsedTimer>
 #include <QPushButton>
+#include <QSettings>
 #include <QStandardPaths>
 
 namespace kumite::test {
@@ -14,6 +15,10 @@ QApplication& gui_application() {
     static char* argv[] = {name, nullptr};
     qputenv("QT_QPA_PLATFORM", "offscreen");
     QStandardPaths::setTestModeEnabled(true); // recent files go to a test QSettings, not the user's
+    // And to one of this process alone: ctest runs test cases side by side, and another window's recent files
+    // must not land in the list a test checks.
+    static const std::filesystem::path settings = make_temp_dir("annotate-settings");
+    QSettings::setPath(QSettings::NativeFormat, QSettings::UserScope, QString::fromStdString(settings.string()));
     // Never destroyed: a QApplication torn down by static destruction, after Qt's own globals, crashes at exit.
     static QApplication* application = new QApplication(argc, argv);
     return *application;
