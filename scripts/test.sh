@@ -6,7 +6,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/setup.sh" --test
 "$root/scripts/fetch_mocap.sh"
 # Optimised as the developer build (-O2, asserts off) but without debug info: a third less compile time on the
-# heaviest files (a clean clone's run took 21 minutes on two cores). A crash under ctest is reproduced with
+# heaviest files (a clean clone's run took 18.5 minutes on two cores). A crash under ctest is reproduced with
 # scripts/build.sh.
 "$root/scripts/build.sh" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG"
 
