@@ -14,6 +14,9 @@ Eigen::Quaterniond load(const float (&q)[4]) { return Eigen::Quaterniond(q[3], q
 
 constexpr double k_pi = 3.14159265358979323846;
 
+// How much more the contact's distance to the course counts in a choice than the wrist's start (block_clips.h).
+constexpr double k_contact_weight = 3.0;
+
 Eigen::Quaterniond yaw_turn(double yaw_rad) { return Eigen::Quaterniond(Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitY())); }
 
 // Where a wrist and elbow go for an arm whose extremity is `extremity` (parent frame, arm lengths), with `swivel`
@@ -129,7 +132,9 @@ bool BlockClips::choose(const BlockClipQuery& query, const RestAnatomy& anatomy,
         const DbClip& record = m_db.clips[clip.index];
         if (record.side != std::uint32_t(side) || (kind_held && record.strike_kind() != query.kind)) continue;
         for (int meet = std::max(clip.meet_from, min_lead); meet <= record.hit_frame; ++meet) {
-            const double d_target = (placed(clip, meet, parent).contact - target).norm();
+            const double contact_error = (placed(clip, meet, parent).contact - target).norm();
+            if (contact_error > query.max_contact_error) continue;
+            const double d_target = k_contact_weight * contact_error;
             if (d_target >= best.score) continue;
             for (int lead = min_lead; lead <= std::min(max_lead, meet); ++lead) {
                 const int start = meet - lead;
@@ -140,7 +145,7 @@ bool BlockClips::choose(const BlockClipQuery& query, const RestAnatomy& anatomy,
                 best.meet_frame = meet;
                 best.rate = lead * m_frame_time_s / query.time_s;
                 best.score = score;
-                best.contact_error_m = d_target * length;
+                best.contact_error_m = contact_error * length;
                 best_clip = &clip;
             }
         }

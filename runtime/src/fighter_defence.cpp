@@ -111,9 +111,9 @@ void Fighter::start_block_clip(const RestAnatomy& anatomy, const DefenderBody& d
     query.wrist = defender.wrist[side];
     query.upper_length = chain.upper_length;
     query.lower_length = chain.lower_length;
-    if (!m_block_clips.choose(query, anatomy, m_block_choice)) return; // no captured block gets there in time
     // A clip whose forearm would have to be carried more than half an arm away is another movement: synthesized.
-    if (m_block_choice.contact_error_m > m_defence.settings().block_clip_reach * chain.length()) return;
+    query.max_contact_error = m_defence.settings().block_clip_reach;
+    if (!m_block_clips.choose(query, anatomy, m_block_choice)) return; // no captured block gets there in time
     // And one whose elbow, bent as the clip bends it, cannot put the forearm there (the course too close to the
     // body for that arm's shape) is not played either.
     const auto at_meet = m_block_clips.arm_points(anatomy, limb, m_block_choice.clip, m_block_choice.meet_frame, query.shoulder, m_heading.yaw_rad,

@@ -46,6 +46,27 @@ TEST_CASE("block_clips: the clip's arm placed on a frame is where the decoder pu
     CHECK(worst < 1e-4);
 }
 
+namespace {
+
+// A downward block asked of `limb` for a punch to be met at `contact_target` in 0.15 s, the arm where `positions` has it.
+BlockClipQuery downward_query(const RestAnatomy& anatomy, std::span<const Eigen::Vector3d> positions, int limb,
+                              const Eigen::Vector3d& contact_target, double heading_yaw_rad) {
+    const LimbChain& chain = anatomy.limbs[limb];
+    BlockClipQuery query;
+    query.limb = limb;
+    query.kind = StrikeKind::downward;
+    query.contact_target = contact_target;
+    query.time_s = 0.15;
+    query.heading_yaw_rad = heading_yaw_rad;
+    query.shoulder = positions[chain.root];
+    query.wrist = positions[chain.extremity];
+    query.upper_length = chain.upper_length;
+    query.lower_length = chain.lower_length;
+    return query;
+}
+
+} // namespace
+
 TEST_CASE("block_clips: a course in front of the chest is met mid-sweep by a downward block, where the choice says", "[runtime][corpus]") {
     const MotionDatabaseContent* content = test::reference_database();
     if (!content) return;
@@ -69,16 +90,7 @@ TEST_CASE("block_clips: a course in front of the chest is met mid-sweep by a dow
         for (const double across : {-0.1, 0.0, 0.1}) {
             for (const double ahead : {0.3, 0.4}) {
                 // A punch at the chest, met 15 cm short of it: in front of the chest, at its height.
-                BlockClipQuery query;
-                query.limb = limb;
-                query.kind = StrikeKind::downward;
-                query.contact_target = chest + ahead * forward + across * left;
-                query.time_s = 0.15;
-                query.heading_yaw_rad = yaw;
-                query.shoulder = positions[chain.root];
-                query.wrist = positions[chain.extremity];
-                query.upper_length = chain.upper_length;
-                query.lower_length = chain.lower_length;
+                const BlockClipQuery query = downward_query(anatomy, positions, limb, chest + ahead * forward + across * left, yaw);
                 BlockClipChoice choice;
                 REQUIRE(blocks.choose(query, anatomy, choice));
                 const DbClip& clip = db.clips[choice.clip];
@@ -86,6 +98,7 @@ TEST_CASE("block_clips: a course in front of the chest is met mid-sweep by a dow
                 CHECK(clip.side == std::uint32_t(limb == int(Limb::arm_l) ? Side::left : Side::right));
                 CHECK(choice.start_frame < choice.meet_frame);
                 CHECK(choice.meet_frame <= int(clip.hit_frame));
+                CHECK(choice.contact_error_m <= query.max_contact_error * chain.length() + 1e-9);
                 CHECK((choice.meet_frame - choice.start_frame) * blocks.frame_time_s() <= query.time_s + 1e-9);
                 before_hit += choice.meet_frame < int(clip.hit_frame);
                 // The choice's estimate (a unit arm, placed once) against the arm placed exactly at that frame.
@@ -102,4 +115,12 @@ TEST_CASE("block_clips: a course in front of the chest is met mid-sweep by a dow
     CHECK(worst < 0.5 * anatomy.limbs[int(Limb::arm_l)].length());
     CHECK(worst_estimate < 0.03);
     INFO("worst contact error " << worst << " m");
+
+    // A course no block's forearm passes near (a metre behind the fighter's back) gets no captured block: the
+    // synthesized one answers it.
+    BlockClipQuery behind = downward_query(anatomy, positions, int(Limb::arm_r), chest - 1.0 * forward, yaw);
+    BlockClipChoice none;
+    CHECK_FALSE(blocks.choose(behind, anatomy, none));
+    behind.max_contact_error = 10.0; // no limit: the nearest one, however far
+    CHECK(blocks.choose(behind, anatomy, none));
 }

@@ -549,8 +549,8 @@ TEST_CASE("fighter: captured blocks against recorded boxers put the forearm on t
     const MotionDatabaseContent* content = reference_database();
     const std::filesystem::path boxing = kumite::test::mocap_root() / "cmu14-boxing";
     if (!content || !std::filesystem::exists(boxing / "box-1.bvh")) return;
-    // Issue 26's bar: the forearm on the fist's path before the fist reaches the target, median within 5 cm (4.4 cm
-    // on 2026-11-26, 36 of 54 blocks captured).
+    // Issue 26's bars: the forearm on the fist's path before the fist reaches the target, median within 5 cm, and at
+    // least 70% of the blocks captured ones (4.4 cm, 44 of 54 on 2026-11-26).
     std::vector<double> to_path;
     int blocks = 0, captured = 0;
     for (const std::string bout : {"box-1.bvh brawler", "box-1.bvh scout", "box-1.bvh giant", "box-2.bvh brawler", "box-2.bvh scout", "box-2.bvh giant",
@@ -585,5 +585,5 @@ TEST_CASE("fighter: captured blocks against recorded boxers put the forearm on t
     const double median = to_path[to_path.size() / 2];
     INFO(captured << " of " << blocks << " blocks captured; forearm to the fist's path, median " << median << " m");
     CHECK(median <= 0.05);
-    CHECK(captured >= 0.6 * blocks);
+    CHECK(captured >= 0.7 * blocks);
 }

@@ -45,8 +45,8 @@ struct DefenceSettings {
     double contact_speed_mps = 2.0;   // a hand meeting the head or chest at least this fast is a strike that arrived
     double hold_s = 0.2;              // the move held after the hand's expected arrival
     double release_s = 0.3;           // back to the guard
-    // Blocks from the database's block clips when one fits (else all synthesized). Off by default: against recorded
-    // boxers they defend 83% of the punches they meet against the synthesized blocks' 96% (README, captured blocks).
+    // Blocks from the database's block clips when one fits (else all synthesized). Off by default: blended in over
+    // the little time a fist leaves, the arm moves about twice as fast as in the captured clip (README, captured blocks).
     bool captured_blocks = false;
     double block_clip_before_m = 0.15; // a captured block meets the course this far before the target (an age-uke
                                        // deflects the fist just in front of the face)
