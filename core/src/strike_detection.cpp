@@ -20,6 +20,10 @@ constexpr double k_knee_speed = 3.5;       // leg lengths per second the knee re
 constexpr double k_block_above_head = 0.3; // a hand this far (arm lengths) above the head is blocking, not punching
 constexpr double k_elbow_rise = 0.8;       // how far an elbow strike lifts the elbow (upper-arm lengths) within 0.6 s
 constexpr double k_elbow_folded_deg = 84.0; // an elbow opened wider than this, its wrist up by the head, is a rising block
+// How far out a punch's fist gets from the chest on the floor plane, in arm lengths, at least: a straight punch
+// thrusts it away (CMU 14's jabs and crosses 0.86-1.16, the kata's 0.86-1.10); an arm opened with the fist still
+// by the body (a kata's chambers and middle blocks, 0.60-0.77) is not thrown at anything.
+constexpr double k_punch_reach = 0.8;
 constexpr double k_punch_rise = 0.3;       // how much a punch's extension grows in the 0.6 s before its hit
 constexpr double k_thrust_window_s = 0.1;  // how long before the hit a punch's fist is seen travelling along its forearm
 constexpr double k_punch_thrust = 0.2;     // cosine between that travel and the forearm, at least
@@ -297,7 +301,7 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
             const auto peaks = local_maxima(signal, half_window, min_gap, [&](int frame) {
                 // A punch lands before the arm locks: 0.78 of the arm's length from the shoulder is a boxer's
                 // straight from a bladed guard (CMU 14); a karateka's reaches full extension.
-                if (signal[frame] < 0.78 || reach[frame][limb] < 0.6) return false;
+                if (signal[frame] < 0.78 || reach[frame][limb] < k_punch_reach) return false;
                 // The capture must go on a little after a hit: a hand still extending as the file ends may not
                 // have arrived.
                 if (frame + settle >= frames) return false;
@@ -321,7 +325,7 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
                 // A forearm pointing steeply down at the hit sweeps low (a downward block), it is not thrust at a target.
                 const Eigen::Vector3d forearm = extremity[hit][limb] - middle[hit][limb];
                 if (forearm.y() < k_punch_forearm_down * forearm.norm()) continue;
-                const double strength = std::min((signal[peak] - 0.78) / 0.22, (reach[peak][limb] - 0.6) / 0.6);
+                const double strength = std::min((signal[peak] - 0.78) / 0.22, (reach[peak][limb] - k_punch_reach) / 0.4);
                 add(StrikeSemantics::punch, parts[2], side, hit, signal, 0.5 + 0.5 * strength);
             }
             detect_elbow_strikes(limb, side, parts[1]);
