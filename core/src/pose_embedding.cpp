@@ -22,7 +22,8 @@ void pose_invariants(std::span<const float> feature, std::span<double> out) {
     const double to_rms = 1.0 / std::sqrt(static_cast<double>(n));
     for (int i = 0; i < n; ++i) {
         out[i] = feature[stride + i] * to_rms;
-        out[n + i] = std::hypot(feature[i] - mean_x, feature[2 * stride + i] - mean_z) * to_rms;
+        const double dx = feature[i] - mean_x, dz = feature[2 * stride + i] - mean_z;
+        out[n + i] = std::sqrt(dx * dx + dz * dz) * to_rms; // leg lengths: no overflow for hypot to guard against
     }
 }
 
@@ -64,17 +65,18 @@ void PoseKeyProjection::project(std::span<const float> feature, std::span<float>
     std::array<double, d> centred;
     pose_invariants(feature, centred);
     for (int i = 0; i < d; ++i) centred[i] -= m_mean[i];
-    std::array<double, d> residual = centred;
+    // Eigen's fixed-size dot products vectorise (a scalar loop's double sum cannot be reordered): 1.5 us of a
+    // 17 us retrieval before (retrieval_bench).
+    using Values = Eigen::Matrix<double, d, 1>;
+    const Eigen::Map<const Values> centred_values(centred.data());
+    Values residual = centred_values;
     for (int axis = 0; axis < k_pose_key_axes; ++axis) {
-        const double* direction = m_axes.data() + std::size_t(axis) * d;
-        double along = 0.0;
-        for (int i = 0; i < d; ++i) along += direction[i] * centred[i];
-        for (int i = 0; i < d; ++i) residual[i] -= along * direction[i];
+        const Eigen::Map<const Values> direction(m_axes.data() + std::size_t(axis) * d);
+        const double along = direction.dot(centred_values);
+        residual -= along * direction;
         key[axis] = static_cast<float>(along);
     }
-    double rest = 0.0;
-    for (double r : residual) rest += r * r;
-    key[k_pose_key_axes] = static_cast<float>(std::sqrt(rest));
+    key[k_pose_key_axes] = static_cast<float>(residual.norm());
 }
 
 } // namespace kumite

@@ -246,6 +246,9 @@ void Retriever::finish(RetrievalResult& result, const RetrievalQuery& query) con
 
 namespace {
 
+// A pose key's floats: three four-float packets.
+using KeyValues = Eigen::Map<const Eigen::Array<float, k_pose_key_dimensions, 1>>;
+
 // The distance from `value` to the interval [low, high], 0 inside.
 inline float gap(float value, float low, float high) { return std::max(0.0f, std::max(low - value, value - high)); }
 
@@ -275,31 +278,34 @@ double Retriever::node_bound(int node, const GroupQuery& group) const {
     // by rounding; the slack keeps the bound a bound.
     const float* low = m_trees.low(node);
     const float* high = m_trees.high(node);
-    float target_squared = 0.0f, key_squared = 0.0f;
+    float target_squared = 0.0f;
     for (int axis = 0; axis < 3; ++axis) {
         const float along = gap(group.target[axis], low[axis], high[axis]);
         target_squared += along * along;
     }
-    for (int d = 0; d < k_pose_key_dimensions; ++d) {
-        const float along = gap(group.key[d], low[3 + d], high[3 + d]);
-        key_squared += along * along;
-    }
+    const KeyValues key(group.key.data()), key_low(low + 3), key_high(high + 3);
+    const float key_squared = (key_low - key).max(key - key_high).max(0.0f).square().sum();
     const double pose_bound = std::max(group.pose_bound, std::sqrt(static_cast<double>(key_squared)) - k_rounding_slack);
     return m_settings.pose_weight * pose_bound + group.to_score * std::max(0.0, std::sqrt(static_cast<double>(target_squared)) - k_rounding_slack);
 }
 
 void Retriever::visit_leaf(const BoxTree::Node& leaf, const GroupQuery& group, const RetrievalQuery& query, RetrievalResult& best) const {
     const double pose_weight = m_settings.pose_weight;
+    const KeyValues query_key(group.key.data());
+    // pose_weight * (|key gap| - slack) < best.score, squared: most candidates fail it, and need no square root.
+    auto key_limit = [&] {
+        if (!(pose_weight > 0.0)) return std::numeric_limits<double>::infinity();
+        const double gap_limit = best.score / pose_weight + k_rounding_slack;
+        return gap_limit > 0.0 ? gap_limit * gap_limit : 0.0;
+    };
+    double key_squared_limit = key_limit();
     for (std::uint32_t k = leaf.begin; k < leaf.end; ++k) {
         const Candidate& candidate = m_candidates[k];
         if (candidate.support_foot && !support_planted(candidate.support_foot, candidate.start_flags, query)) continue;
         if (!query.excluded_clips.empty() && excluded(candidate.pose, query)) continue;
         ++best.counts.candidates_seen;
-        float key_squared = 0.0f;
-        for (int d = 0; d < k_pose_key_dimensions; ++d) {
-            const float along = candidate.pose_key[d] - group.key[d];
-            key_squared += along * along;
-        }
+        const float key_squared = (KeyValues(candidate.pose_key) - query_key).square().sum();
+        if (!(key_squared < key_squared_limit)) continue; // the cluster's bound below only raises pose_bound
         double pose_bound = std::sqrt(static_cast<double>(key_squared));
         if (group.centroid_distance >= 0.0) pose_bound = std::max(pose_bound, std::abs(group.centroid_distance - candidate.distance_to_centroid));
         const double pose_part = pose_weight * std::max(0.0, pose_bound - k_rounding_slack);
@@ -316,7 +322,7 @@ void Retriever::visit_leaf(const BoxTree::Node& leaf, const GroupQuery& group, c
         const double d_pose = rms_distance(query.pose_feature, m_db.feature(candidate.pose));
         if (!(pose_weight * d_pose + target_part < best.score)) continue;
         ++best.counts.target_scored;
-        score_start(static_cast<int>(candidate.pose), query, d_pose, best);
+        if (score_start(static_cast<int>(candidate.pose), query, d_pose, best)) key_squared_limit = key_limit();
     }
 }
 
