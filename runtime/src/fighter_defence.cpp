@@ -97,18 +97,6 @@ void Fighter::defend(double t_s) {
 
 void Fighter::start_block_clip(const RestAnatomy& anatomy, const DefenderBody& defender) {
     if (m_block_clips.empty() || !m_defence.settings().captured_blocks) return;
-    // Met block_clip_before_m short of the target first; a course too close to the body for the chosen clip's arm
-    // shape is met further out, where a sweeping forearm reaches it (earlier, so with less time). Against the
-    // recorded boxers that took the captured share of blocks from 86% to 90%, on simulate:punch (brawler) from 18 to
-    // 22 of 28, the same punches defended; with under 0.1 s to get there, two more chest punches landed.
-    const DefenceSettings& settings = m_defence.settings();
-    const int steps = static_cast<int>(std::floor(settings.block_clip_further_m / 0.1 + 1e-9));
-    for (int step = 0; step <= steps; ++step) {
-        if (try_block_clip(anatomy, defender, settings.block_clip_before_m + 0.1 * step, step > 0 ? settings.block_clip_further_min_s : 0.0)) return;
-    }
-}
-
-bool Fighter::try_block_clip(const RestAnatomy& anatomy, const DefenderBody& defender, double before_m, double min_time_s) {
     const int side = m_defence.block_arm();
     const int limb = side == 0 ? int(Limb::arm_l) : int(Limb::arm_r);
     const LimbChain& chain = anatomy.limbs[limb];
@@ -117,7 +105,7 @@ bool Fighter::try_block_clip(const RestAnatomy& anatomy, const DefenderBody& def
     // Against the head the forearm rises over it (age-uke); below the head it sweeps down (gedan-barai), meeting a
     // chest punch on its way down.
     query.kind = m_defence.move_strike().at_head ? StrikeKind::rising : StrikeKind::downward;
-    if (!m_defence.course_point(before_m, query.contact_target, query.time_s) || query.time_s < min_time_s) return false;
+    if (!m_defence.course_point(m_defence.settings().block_clip_before_m, query.contact_target, query.time_s)) return;
     query.heading_yaw_rad = m_heading.yaw_rad;
     query.shoulder = defender.shoulder[side];
     query.wrist = defender.wrist[side];
@@ -125,7 +113,7 @@ bool Fighter::try_block_clip(const RestAnatomy& anatomy, const DefenderBody& def
     query.lower_length = chain.lower_length;
     // A clip whose forearm would have to be carried more than half an arm away is another movement: synthesized.
     query.max_contact_error = m_defence.settings().block_clip_reach;
-    if (!m_block_clips.choose(query, anatomy, m_block_choice)) return false; // no captured block gets there in time
+    if (!m_block_clips.choose(query, anatomy, m_block_choice)) return; // no captured block gets there in time
     // And one whose elbow, bent as the clip bends it, cannot put the forearm there (the course too close to the
     // body for that arm's shape) is not played either.
     const auto at_meet = m_block_clips.arm_points(anatomy, limb, m_block_choice.clip, m_block_choice.meet_frame, query.shoulder, m_heading.yaw_rad,
@@ -136,11 +124,10 @@ bool Fighter::try_block_clip(const RestAnatomy& anatomy, const DefenderBody& def
     const TwoBoneSolution placed = two_bone_ik(query.shoulder, asked, chain.upper_length, chain.lower_length,
                                                swivel_keeping_bend(query.shoulder, asked, bend, reference, 0.0), reference);
     const Eigen::Vector3d contact = placed.extremity + k_block_contact_fraction * (placed.middle - placed.extremity);
-    if ((contact - query.contact_target).norm() > m_defence.settings().block_contact_m) return false;
-    m_defence.use_block_clip(m_block_choice.clip, m_block_choice.clip_arm_speed_mps, std::max(0.03, 0.6 * query.time_s), before_m);
+    if ((contact - query.contact_target).norm() > m_defence.settings().block_contact_m) return;
+    m_defence.use_block_clip(m_block_choice.clip, m_block_choice.clip_arm_speed_mps, std::max(0.03, 0.6 * query.time_s));
     m_block_played = 0.0;
     m_block_played_s = m_now_s;
-    return true;
 }
 
 void Fighter::apply_defence() {

@@ -52,9 +52,6 @@ struct DefenceSettings {
                                        // deflects the fist just in front of the face)
     double block_clip_reach = 0.5;    // a captured block whose forearm would have to be moved further (arm lengths) to
                                       // meet the course is another movement: the synthesized block instead
-    double block_clip_further_m = 0.2; // a course too close to the body for the clip's arm is met up to this much further
-                                       // out, in 0.1 m steps (a gedan-barai's straight arm sweeps far from the chest)
-    double block_clip_further_min_s = 0.1; // ... when the fist leaves at least this long to get there
 };
 
 // The fighter's body as the defence sees it (world metres, last frame): arms [left, right].
@@ -118,9 +115,8 @@ public:
     const UserStrikeEvent& move_strike() const { return m_hands[std::max(0, m_move_hand)].strike; }
     double move_start_s() const { return m_move_start_s; }
     double intercept_s() const { return m_intercept_s; }
-    // The block that started is a captured one: its clip, the clip's own arm speed, the blend in and where its forearm
-    // meets the course (this far short of the target).
-    void use_block_clip(int clip, double clip_arm_speed_mps, double ramp_s, double before_m);
+    // The block that started is a captured one: its clip, the clip's own arm speed and the blend in.
+    void use_block_clip(int clip, double clip_arm_speed_mps, double ramp_s);
     // Where the course of the strike the move answers is `before_m` short of its target, and when (from now).
     bool course_point(double before_m, Eigen::Vector3d& point, double& time_s) const;
     // How long the fist still needs to the block's meeting point (block_wrist_target), along its course now; 0 once past.

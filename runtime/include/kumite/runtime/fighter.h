@@ -217,8 +217,6 @@ private:
     void apply_defence();           // decodes the shown pose again with the move's edits (when one is on)
     // A block just started: a captured one instead when one fits (block_clips.h).
     void start_block_clip(const RestAnatomy& anatomy, const DefenderBody& defender);
-    // One captured block meeting the course before_m short of the target, with at least min_time_s to get there.
-    bool try_block_clip(const RestAnatomy& anatomy, const DefenderBody& defender, double before_m, double min_time_s);
     bool order_fits(const StrikeOrder& order, const char*& why) const;
     // A retrieval that prefers a clip not struck lately (FighterSettings::variety_recent); `varied` tells if it did.
     RetrievalResult query_with_variety(RetrievalQuery& query, bool& varied);
