@@ -7,6 +7,7 @@
 
 #include "kumite/runtime/fighter.h"
 #include "kumite/runtime/capture_user.h"
+#include "kumite/core/contact_point.h"
 #include "kumite/core/joint_limits.h"
 #include "kumite/runtime/simulated_user.h"
 #include "kumite/formats/bvh_reader.h"
@@ -586,4 +587,43 @@ TEST_CASE("fighter: captured blocks against recorded boxers put the forearm on t
     INFO(captured << " of " << blocks << " blocks captured; forearm to the fist's path, median " << median << " m");
     CHECK(median <= 0.05);
     CHECK(captured >= 0.7 * blocks);
+}
+
+TEST_CASE("fighter: a block against a chest punch keeps the forearm in front of the chest", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    if (!content) return;
+    // A minute of simulate:punch (as `kumite play --tracker simulate:punch`, seed 1) on the brawler, captured blocks
+    // on. Looked at: meeting chest punches further out once brought the forearm 3-8 cm behind the chest joint, inside
+    // the torso (README, captured blocks). Measured here: the blocking forearm's wrist and contact point stay in front
+    // of the chest joint along the line to the user for every chest block, captured or synthesized.
+    FighterSettings settings;
+    settings.defence.captured_blocks = true;
+    Bout b(content->view(), "brawler", settings);
+    const RestAnatomy& anatomy = b.brawler.rig->anatomy();
+    SimulatedUser user(SimulatedKind::punch, 1);
+    double deepest = 1.0;
+    int chest_block_frames = 0;
+    for (int frame = 0; frame < 60 * 60; ++frame) {
+        const double t = frame / 60.0;
+        user.set_opponent(b.fighter->part_position(BodyPart::head), b.fighter->part_position(BodyPart::chest));
+        const Eigen::Vector3d head = user.head(t);
+        const UserHands hands = user.hands(t);
+        b.fighter->step(t, &head, &hands);
+        b.fighter->clear_events();
+        const Defence& defence = b.fighter->defence();
+        if (!is_block(defence.move()) || defence.block_weight() <= 0.0 || defence.move_strike().at_head) continue;
+        const Eigen::Vector3d chest = b.fighter->part_position(BodyPart::chest);
+        Eigen::Vector3d toward_user = head - chest;
+        toward_user.y() = 0.0;
+        toward_user.normalize();
+        const LimbChain& arm = anatomy.limbs[defence.block_arm() == 0 ? int(Limb::arm_l) : int(Limb::arm_r)];
+        const auto positions = b.fighter->positions();
+        const Eigen::Vector3d wrist = positions[arm.extremity];
+        const Eigen::Vector3d contact = wrist + k_block_contact_fraction * (positions[arm.middle] - wrist);
+        deepest = std::min({deepest, (wrist - chest).dot(toward_user), (contact - chest).dot(toward_user)});
+        ++chest_block_frames;
+    }
+    INFO("the blocking forearm's deepest point, ahead of the chest joint: " << deepest << " m over " << chest_block_frames << " frames");
+    CHECK(chest_block_frames > 100);
+    CHECK(deepest > 0.0);
 }
