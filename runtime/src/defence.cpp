@@ -95,14 +95,14 @@ void Defence::end_strike(double t_s, Hand& hand, UserStrikeOutcome outcome) {
 }
 
 bool Defence::block_plan(const Hand& hand, const DefenderBody& body, double time_to_impact, const std::array<bool, 2>& arms,
-                         Eigen::Vector3d& wrist_target, int& arm) const {
+                         Eigen::Vector3d& wrist_target, int& arm, bool nearer) const {
     const double speed = hand.velocity.norm();
     // The fighter's arm on the side the hand comes from first (+X of its heading frame is its left), then the other.
     const int near_arm = body.heading.to_heading(hand.position).x() >= 0.0 ? 0 : 1;
     for (const int candidate : {near_arm, 1 - near_arm}) {
         if (!arms[candidate]) continue;
         // Where the forearm meets the course: block_before_m short of the target, else half that (more time).
-        for (const double before : {m_block_before_m, 0.5 * m_block_before_m}) {
+        for (const double before : {m_block_before_m, nearer ? 0.5 * m_block_before_m : m_block_before_m}) {
             const double intercept_s = time_to_impact - before / speed;
             const Eigen::Vector3d intercept = hand.position + hand.velocity * std::max(0.0, intercept_s);
             const double travel = (intercept - body.wrist[candidate]).norm();
@@ -251,7 +251,10 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
                 int arm = 0;
                 std::array<bool, 2> same_arm{};
                 same_arm[m_arm] = true;
-                if (arrival > 0.0 && block_plan(hand, body, arrival, same_arm, wrist_target, arm)) m_wrist_target = wrist_target;
+                // A captured block keeps its meeting point's distance: nearer, it would follow a fist that got past
+                // it into the chest (the forearm inside the torso).
+                if (arrival > 0.0 && block_plan(hand, body, arrival, same_arm, wrist_target, arm, m_move == DefenceMove::synthesized))
+                    m_wrist_target = wrist_target;
                 // The first estimate of its speed mixes in the draw back too: a fist faster than first seen reaches
                 // the meeting point sooner, and the forearm, shown from the next frame on, has to be there a frame
                 // before it. The ramp starts again from where it is, to end then.

@@ -149,9 +149,10 @@ private:
     void push(const UserStrikeEvent& event);
     void start_move(double t_s, Hand& hand, const DefenderBody& body, double time_to_impact, const Allowed& allowed);
     // Where the blocking wrist should go to meet the hand's course in time, and with which arm (the one on the side
-    // it comes from first, else the other, among `arms`); false when none can get there at a plausible speed.
+    // it comes from first, else the other, among `arms`); false when none can get there at a plausible speed. The
+    // meeting is block_before_m short of the target, or (`nearer`) half that when the first is out of reach.
     bool block_plan(const Hand& hand, const DefenderBody& body, double time_to_impact, const std::array<bool, 2>& arms,
-                    Eigen::Vector3d& wrist_target, int& arm) const;
+                    Eigen::Vector3d& wrist_target, int& arm, bool nearer = true) const;
     void end_strike(double t_s, Hand& hand, UserStrikeOutcome outcome);
     double ramp_weight(double t_s) const; // the move's weight at t_s while it ramps in
 
