@@ -118,12 +118,19 @@ bool BlockClips::choose(const BlockClipQuery& query, const RestAnatomy& anatomy,
     // met chest punches less surely than a gedan-barai's: 3 of 5 landed on the scout; kinds are not mixed.)
     bool kind_held = false;
     for (const Clip& clip : m_clips) kind_held |= m_db.clips[clip.index].side == std::uint32_t(side) && m_db.clips[clip.index].strike_kind() == query.kind;
-    const int max_lead = static_cast<int>(std::floor(query.time_s / m_frame_time_s));
-    const int min_lead = std::max(1, static_cast<int>(std::ceil(0.4 * query.time_s / m_frame_time_s)));
-    if (max_lead < 1) return false;
-    // The target and the wrist now on the unit arm, in the fighter's heading frame.
+    // The course points and the wrist now on the unit arm, in the fighter's heading frame, and the leads each leaves.
     const Eigen::Quaterniond to_heading = yaw_turn(-query.heading_yaw_rad);
-    const Eigen::Vector3f target = (to_heading * (query.contact_target - query.shoulder) / length).cast<float>();
+    const int course_count = std::clamp(query.course_count, 0, int(query.course.size()));
+    std::array<Eigen::Vector3f, 4> targets;
+    std::array<int, 4> max_leads{}, min_leads{};
+    bool any_time = false;
+    for (int k = 0; k < course_count; ++k) {
+        targets[k] = (to_heading * (query.course[k].point - query.shoulder) / length).cast<float>();
+        max_leads[k] = static_cast<int>(std::floor(query.course[k].time_s / m_frame_time_s));
+        min_leads[k] = std::max(1, static_cast<int>(std::ceil(0.4 * query.course[k].time_s / m_frame_time_s)));
+        any_time |= max_leads[k] >= 1;
+    }
+    if (!any_time) return false;
     const Eigen::Vector3f wrist = (to_heading * (query.wrist - query.shoulder) / length).cast<float>();
     BlockClipChoice best;
     best.score = std::numeric_limits<double>::infinity();
@@ -131,22 +138,27 @@ bool BlockClips::choose(const BlockClipQuery& query, const RestAnatomy& anatomy,
     for (const Clip& clip : m_clips) {
         const DbClip& record = m_db.clips[clip.index];
         if (record.side != std::uint32_t(side) || (kind_held && record.strike_kind() != query.kind)) continue;
-        for (int meet = std::max(clip.meet_from, min_lead); meet <= record.hit_frame; ++meet) {
-            const double contact_error = (placed(clip, meet, parent).contact - target).norm();
-            if (contact_error > query.max_contact_error) continue;
-            const double d_target = k_contact_weight * contact_error;
-            if (d_target >= best.score) continue;
-            for (int lead = min_lead; lead <= std::min(max_lead, meet); ++lead) {
-                const int start = meet - lead;
-                const double score = (placed(clip, start, parent).wrist - wrist).norm() + d_target;
-                if (score >= best.score) continue;
-                best.clip = clip.index;
-                best.start_frame = start;
-                best.meet_frame = meet;
-                best.rate = lead * m_frame_time_s / query.time_s;
-                best.score = score;
-                best.contact_error_m = contact_error * length;
-                best_clip = &clip;
+        for (int k = 0; k < course_count; ++k) {
+            const int min_lead = min_leads[k], max_lead = max_leads[k];
+            if (max_lead < 1) continue;
+            for (int meet = std::max(clip.meet_from, min_lead); meet <= record.hit_frame; ++meet) {
+                const double contact_error = (placed(clip, meet, parent).contact - targets[k]).norm();
+                if (contact_error > query.max_contact_error) continue;
+                const double d_target = k_contact_weight * contact_error;
+                if (d_target >= best.score) continue;
+                for (int lead = min_lead; lead <= std::min(max_lead, meet); ++lead) {
+                    const int start = meet - lead;
+                    const double score = (placed(clip, start, parent).wrist - wrist).norm() + d_target;
+                    if (score >= best.score) continue;
+                    best.clip = clip.index;
+                    best.start_frame = start;
+                    best.meet_frame = meet;
+                    best.rate = lead * m_frame_time_s / query.course[k].time_s;
+                    best.score = score;
+                    best.course_point = k;
+                    best.contact_error_m = contact_error * length;
+                    best_clip = &clip;
+                }
             }
         }
     }

@@ -154,11 +154,11 @@ void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, doubl
     hand.strike.arm = m_arm;
 }
 
-void Defence::use_block_clip(int clip, double clip_arm_speed_mps, double ramp_s) {
+void Defence::use_block_clip(int clip, double clip_arm_speed_mps, double ramp_s, double before_m) {
     if (m_move != DefenceMove::synthesized || m_move_hand < 0) return;
     m_move = DefenceMove::block_clip;
     m_ramp_s = ramp_s;
-    m_block_before_m = m_settings.block_clip_before_m;
+    m_block_before_m = before_m;
     double time_s = 0.0;
     course_point(m_block_before_m, m_wrist_target, time_s);
     m_intercept_s = std::max(0.02, time_s);

@@ -105,27 +105,39 @@ void Fighter::start_block_clip(const RestAnatomy& anatomy, const DefenderBody& d
     // Against the head the forearm rises over it (age-uke); below the head it sweeps down (gedan-barai), meeting a
     // chest punch on its way down.
     query.kind = m_defence.move_strike().at_head ? StrikeKind::rising : StrikeKind::downward;
-    if (!m_defence.course_point(m_defence.settings().block_clip_before_m, query.contact_target, query.time_s)) return;
+    // Where on the course: from just outside the hit radius of the part it is aimed at (a fist blocked there has
+    // not touched it yet) to `block_clip_span_m` further out, wherever the clip's forearm passes nearest.
+    const DefenceSettings& settings = m_defence.settings();
+    const double nearest_m = (m_defence.move_strike().at_head ? settings.head_radius_m : settings.chest_radius_m) + settings.block_contact_m;
+    query.course_count = 0;
+    for (int k = 0; k < int(query.course.size()); ++k) {
+        const double before_m = nearest_m + settings.block_clip_span_m * k / double(query.course.size() - 1);
+        CoursePoint& point = query.course[query.course_count];
+        point.before_m = before_m;
+        if (m_defence.course_point(before_m, point.point, point.time_s)) ++query.course_count;
+    }
+    if (query.course_count == 0) return;
     query.heading_yaw_rad = m_heading.yaw_rad;
     query.shoulder = defender.shoulder[side];
     query.wrist = defender.wrist[side];
     query.upper_length = chain.upper_length;
     query.lower_length = chain.lower_length;
     // A clip whose forearm would have to be carried more than half an arm away is another movement: synthesized.
-    query.max_contact_error = m_defence.settings().block_clip_reach;
+    query.max_contact_error = settings.block_clip_reach;
     if (!m_block_clips.choose(query, anatomy, m_block_choice)) return; // no captured block gets there in time
     // And one whose elbow, bent as the clip bends it, cannot put the forearm there (the course too close to the
     // body for that arm's shape) is not played either.
     const auto at_meet = m_block_clips.arm_points(anatomy, limb, m_block_choice.clip, m_block_choice.meet_frame, query.shoulder, m_heading.yaw_rad,
                                                  Eigen::Vector3d::Zero());
     const Eigen::Vector3d bend = limb_bend_direction(query.shoulder, at_meet.elbow, at_meet.wrist), reference = limb_swivel_reference(m_mir, limb);
-    const Eigen::Vector3d offset = contact_offset(chain, query.shoulder, at_meet.wrist, bend, reference, query.contact_target);
+    const CoursePoint& meeting = query.course[m_block_choice.course_point];
+    const Eigen::Vector3d offset = contact_offset(chain, query.shoulder, at_meet.wrist, bend, reference, meeting.point);
     const Eigen::Vector3d asked = at_meet.wrist + offset;
     const TwoBoneSolution placed = two_bone_ik(query.shoulder, asked, chain.upper_length, chain.lower_length,
                                                swivel_keeping_bend(query.shoulder, asked, bend, reference, 0.0), reference);
     const Eigen::Vector3d contact = placed.extremity + k_block_contact_fraction * (placed.middle - placed.extremity);
-    if ((contact - query.contact_target).norm() > m_defence.settings().block_contact_m) return;
-    m_defence.use_block_clip(m_block_choice.clip, m_block_choice.clip_arm_speed_mps, std::max(0.03, 0.6 * query.time_s));
+    if ((contact - meeting.point).norm() > settings.block_contact_m) return;
+    m_defence.use_block_clip(m_block_choice.clip, m_block_choice.clip_arm_speed_mps, std::max(0.03, 0.6 * meeting.time_s), meeting.before_m);
     m_block_played = 0.0;
     m_block_played_s = m_now_s;
 }

@@ -55,8 +55,9 @@ BlockClipQuery downward_query(const RestAnatomy& anatomy, std::span<const Eigen:
     BlockClipQuery query;
     query.limb = limb;
     query.kind = StrikeKind::downward;
-    query.contact_target = contact_target;
-    query.time_s = 0.15;
+    query.course[0].point = contact_target;
+    query.course[0].time_s = 0.15;
+    query.course_count = 1;
     query.heading_yaw_rad = heading_yaw_rad;
     query.shoulder = positions[chain.root];
     query.wrist = positions[chain.extremity];
@@ -99,11 +100,11 @@ TEST_CASE("block_clips: a course in front of the chest is met mid-sweep by a dow
                 CHECK(choice.start_frame < choice.meet_frame);
                 CHECK(choice.meet_frame <= int(clip.hit_frame));
                 CHECK(choice.contact_error_m <= query.max_contact_error * chain.length() + 1e-9);
-                CHECK((choice.meet_frame - choice.start_frame) * blocks.frame_time_s() <= query.time_s + 1e-9);
+                CHECK((choice.meet_frame - choice.start_frame) * blocks.frame_time_s() <= query.course[0].time_s + 1e-9);
                 before_hit += choice.meet_frame < int(clip.hit_frame);
                 // The choice's estimate (a unit arm, placed once) against the arm placed exactly at that frame.
                 const auto at_meet = blocks.arm_points(anatomy, limb, choice.clip, choice.meet_frame, query.shoulder, yaw, Eigen::Vector3d::Zero());
-                const double exact = (at_meet.contact - query.contact_target).norm();
+                const double exact = (at_meet.contact - query.course[0].point).norm();
                 worst = std::max(worst, exact);
                 worst_estimate = std::max(worst_estimate, std::abs(exact - choice.contact_error_m));
                 ++checked;
@@ -123,4 +124,19 @@ TEST_CASE("block_clips: a course in front of the chest is met mid-sweep by a dow
     CHECK_FALSE(blocks.choose(behind, anatomy, none));
     behind.max_contact_error = 10.0; // no limit: the nearest one, however far
     CHECK(blocks.choose(behind, anatomy, none));
+
+    // Where on the course is part of the choice: of a point behind the fighter and one in front of its chest, the
+    // one in front is met, with its own time.
+    BlockClipQuery two = downward_query(anatomy, positions, int(Limb::arm_r), chest - 1.0 * forward, yaw);
+    two.course[1].point = chest + 0.3 * forward;
+    two.course[1].time_s = 0.2;
+    two.course_count = 2;
+    BlockClipChoice in_front;
+    REQUIRE(blocks.choose(two, anatomy, in_front));
+    CHECK(in_front.course_point == 1);
+    CHECK((in_front.meet_frame - in_front.start_frame) * blocks.frame_time_s() <= 0.2 + 1e-9);
+    CHECK(in_front.contact_error_m <= two.max_contact_error * anatomy.limbs[int(Limb::arm_r)].length() + 1e-9);
+    // Only the first course_count points count.
+    two.course_count = 1;
+    CHECK_FALSE(blocks.choose(two, anatomy, in_front));
 }

@@ -10,7 +10,9 @@
 // its way up), and holds there. A meeting whose contact is further than `max_contact_error` arm lengths from
 // where the forearm must meet the course is not a candidate (the forearm would have to be carried there: another
 // movement). The score is
-//     d = |wrist at the start - wrist now| / arm + 3 |contact at the meeting - where the forearm must meet the course| / arm
+//     d = |wrist at the start - wrist now| / arm + 3 |contact at the meeting - where the forearm meets the course| / arm
+// over the query's course points (where on the course the forearm meets it is part of the choice: a fist is met where
+// the clip's forearm passes, from just outside the hit radius to 15 cm further out; each point has its time).
 // The contact's distance counts three times: the wrist's start is blended in over the whole time the fist leaves,
 // the contact's offset has to carry the forearm onto the fist's course, the larger move. Weighted equally, 31% of
 // the blocks against recorded boxers fell back to synthesized ones (the best-scored clip's contact too far);
@@ -30,16 +32,26 @@
 #include "kumite/core/mir.h"
 #include "kumite/core/motion_database.h"
 
+#include <array>
 #include <vector>
 
 namespace kumite {
 
+// A point of the fist's course where a forearm may meet it, and when the fist gets there.
+struct CoursePoint {
+    Eigen::Vector3d point = Eigen::Vector3d::Zero(); // world
+    double time_s = 0.2;                              // from now
+    double before_m = 0.0;                            // how far before the target, along the course
+};
+
 struct BlockClipQuery {
     int limb = 0;                          // Limb::arm_l or Limb::arm_r: the blocking arm
     StrikeKind kind = StrikeKind::none;    // wanted (rising, downward); none or absent from the database: any
-    Eigen::Vector3d contact_target = Eigen::Vector3d::Zero(); // world: where the forearm must meet the course
-    double time_s = 0.2;                   // until the fist gets there
-    double max_contact_error = 0.5;        // arm lengths: meetings whose contact is further from contact_target are not candidates
+    // Where the forearm may meet the course (its first `course_count`): the choice takes the one its clip's forearm
+    // passes nearest, so that the arm is carried least.
+    std::array<CoursePoint, 4> course{};
+    int course_count = 1;
+    double max_contact_error = 0.5;        // arm lengths: meetings whose contact is further from the course point are not candidates
     double heading_yaw_rad = 0.0;          // the fighter's heading (heading_frame.h)
     Eigen::Vector3d shoulder = Eigen::Vector3d::Zero(), wrist = Eigen::Vector3d::Zero(); // world, now
     double upper_length = 0.3, lower_length = 0.3;
@@ -51,6 +63,7 @@ struct BlockClipChoice {
     int meet_frame = 0;       // where the forearm meets the course (a frame of the clip's last sweep), held after
     double rate = 1.0;        // clip seconds per second (<= 1: never faster than captured)
     double score = 0.0;
+    int course_point = 0;     // the query's course point met
     double contact_error_m = 0.0;   // the clip's contact at the meeting frame, on the fighter, to the target (before the offset)
     double clip_arm_speed_mps = 0.0; // the fastest the clip moves the wrist or elbow relative to the shoulder, as played
 };

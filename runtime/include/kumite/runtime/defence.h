@@ -48,8 +48,8 @@ struct DefenceSettings {
     // Blocks from the database's block clips when one fits (else all synthesized). Off by default: blended in over
     // the little time a fist leaves, the arm moves about twice as fast as in the captured clip (README, captured blocks).
     bool captured_blocks = false;
-    double block_clip_before_m = 0.15; // a captured block meets the course this far before the target (an age-uke
-                                       // deflects the fist just in front of the face)
+    double block_clip_span_m = 0.15;  // a captured block meets the course between just outside the hit radius (the
+                                      // radius and block_contact_m) and this much further out, where its forearm passes
     double block_clip_reach = 0.5;    // a captured block whose forearm would have to be moved further (arm lengths) to
                                       // meet the course is another movement: the synthesized block instead
 };
@@ -115,8 +115,9 @@ public:
     const UserStrikeEvent& move_strike() const { return m_hands[std::max(0, m_move_hand)].strike; }
     double move_start_s() const { return m_move_start_s; }
     double intercept_s() const { return m_intercept_s; }
-    // The block that started is a captured one: its clip, the clip's own arm speed and the blend in.
-    void use_block_clip(int clip, double clip_arm_speed_mps, double ramp_s);
+    // The block that started is a captured one: its clip, the clip's own arm speed, the blend in and where it meets
+    // the course (this far before the target).
+    void use_block_clip(int clip, double clip_arm_speed_mps, double ramp_s, double before_m);
     // Where the course of the strike the move answers is `before_m` short of its target, and when (from now).
     bool course_point(double before_m, Eigen::Vector3d& point, double& time_s) const;
     // How long the fist still needs to the block's meeting point (block_wrist_target), along its course now; 0 once past.
