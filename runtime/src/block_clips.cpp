@@ -114,8 +114,7 @@ bool BlockClips::choose(const BlockClipQuery& query, const RestAnatomy& anatomy,
     const bool left = query.limb == int(Limb::arm_l);
     const Side side = left ? Side::left : Side::right;
     const int parent = chain.parent_part == int(left ? BodyPart::clavicle_l : BodyPart::clavicle_r) ? 0 : 1;
-    // The wanted kind when the database holds it for this side, else any. (An age-uke's sweep crossing the chest
-    // met chest punches less surely than a gedan-barai's: 3 of 5 landed on the scout; kinds are not mixed.)
+    // The wanted kind when the database holds it for this side, else any.
     bool kind_held = false;
     for (const Clip& clip : m_clips) kind_held |= m_db.clips[clip.index].side == std::uint32_t(side) && m_db.clips[clip.index].strike_kind() == query.kind;
     // The course points and the wrist now on the unit arm, in the fighter's heading frame, and the leads each leaves.

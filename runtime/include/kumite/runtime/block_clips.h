@@ -3,7 +3,7 @@
 // for a user's strike and played on the fighter's blocking arm over whatever the rest of the body is doing.
 //
 // Choice. A candidate is a meeting frame of a block clip of the blocking arm's side (and of the wanted kind when
-// the database holds one: rising against the head, downward below it) and a start frame before it whose lead fits
+// the database holds one: rising against the head; either below it) and a start frame before it whose lead fits
 // in the time the fist leaves (played at most at the captured speed, at least at 0.4 of it). The meeting frame is
 // any frame of the clip's last sweep, from a third of the way in to its annotated hit: a block meets the fist where
 // its sweep crosses the course (a gedan-barai's sweep crosses the chest on its way down, an age-uke's the face on
