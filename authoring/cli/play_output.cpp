@@ -123,6 +123,9 @@ nlohmann::json play_report_json(const Bout& bout) {
               {"synthesized", counters.blocks - counters.block_clips}, {"slips", counters.slips}, {"blocked", counters.blocked},
               {"slipped", counters.slipped}, {"hit_by_user", counters.hit_by_user}, {"missed", counters.user_missed},
               {"forearm_to_path_m", quantiles_of(counters.forearm_to_path_m)},
+              {"arm_speed_mps",
+               {{"block_clip", quantiles_of(counters.block_clip_arm_speed_mps)}, {"synthesized", quantiles_of(counters.synthesized_arm_speed_mps)}}},
+              {"block_clip_speed_ratio", quantiles_of(counters.block_clip_speed_ratio)},
               {"joint_limit_violations", counters.defence_joint_limit_violations},
               {"foot_shift_m", counters.defence_foot_shift_m},
               {"by_target", by_target}}}};

@@ -213,6 +213,13 @@ void Bout::step(double t_s) {
                 }
                 ++m_counters.user_outcomes_by_target[event.user_strike.at_head ? 0 : 1][static_cast<int>(event.user_strike.outcome)];
                 if (event.user_strike.forearm_to_path_m >= 0.0) m_counters.forearm_to_path_m.add(event.user_strike.forearm_to_path_m);
+                if (const UserStrikeEvent& block = event.user_strike; block.arm_speed_mps >= 0.0) {
+                    if (block.move == DefenceMove::synthesized) m_counters.synthesized_arm_speed_mps.add(block.arm_speed_mps);
+                    if (block.move == DefenceMove::block_clip) {
+                        m_counters.block_clip_arm_speed_mps.add(block.arm_speed_mps);
+                        if (block.clip_arm_speed_mps > 0.0) m_counters.block_clip_speed_ratio.add(block.arm_speed_mps / block.clip_arm_speed_mps);
+                    }
+                }
                 m_counters.defence_joint_limit_violations += event.joint_limit_violations;
                 m_counters.defence_foot_shift_m = std::max(m_counters.defence_foot_shift_m, event.foot_shift_m);
                 break;

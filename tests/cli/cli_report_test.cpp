@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <regex>
@@ -40,7 +41,8 @@ TEST_CASE("cli: report and play --html draw the bout's events, counts equal to t
     CHECK(nlohmann::json::parse(drawn.out)["complete"] == true);
 
     // What the events say.
-    std::map<std::string, long long> types, outcomes;
+    std::map<std::string, long long> types, outcomes, arm_speeds;
+    std::map<std::string, double> fastest_arm;
     long long hits = 0, targets = 0;
     std::istringstream lines(read_text(folder / "bout.jsonl"));
     for (std::string line; std::getline(lines, line);) {
@@ -48,6 +50,10 @@ TEST_CASE("cli: report and play --html draw the bout's events, counts equal to t
         ++types[event["type"].get<std::string>()];
         if (event["type"] == "strike") hits += event["result"] == "hit", targets += event.contains("target");
         if (event["type"] == "user_strike_end") ++outcomes[event["outcome"].get<std::string>()];
+        if (event["type"] == "user_strike_end" && event.contains("arm_speed_mps")) {
+            ++arm_speeds[event["move"].get<std::string>()];
+            fastest_arm[event["move"].get<std::string>()] = std::max(fastest_arm[event["move"].get<std::string>()], event["arm_speed_mps"].get<double>());
+        }
     }
     const nlohmann::json report = nlohmann::json::parse(read_text(folder / "bout.json"));
     REQUIRE(types["strike"] >= 5);
@@ -55,6 +61,13 @@ TEST_CASE("cli: report and play --html draw the bout's events, counts equal to t
     CHECK(types["bout_end"] == 1);
     CHECK(types["track"] >= 200); // 10 a second
     CHECK(types["strike"] == report["strikes"].get<long long>());
+    // The blocks' arm speeds (no pop: issue 26), per block as the events give them.
+    const nlohmann::json& speeds = report["user_strikes"]["arm_speed_mps"];
+    CHECK(arm_speeds["synthesized"] > 0);
+    CHECK(speeds["synthesized"]["count"].get<long long>() == arm_speeds["synthesized"]);
+    CHECK(speeds["synthesized"]["max"].get<double>() == Approx(fastest_arm["synthesized"]));
+    CHECK(speeds["block_clip"]["count"].get<long long>() == arm_speeds["block_clip"]);
+    CHECK(report["user_strikes"]["block_clip_speed_ratio"]["count"].get<long long>() == arm_speeds["block_clip"]);
 
     for (const char* page : {"play.html", "report.html"}) {
         INFO(page);

@@ -63,6 +63,9 @@ struct BoutCounters {
     long long block_clips = 0; // of the blocks, captured ones (block_clips.h); the rest synthesized
     std::array<std::array<long long, 4>, 2> user_outcomes_by_target{}; // [head, chest][UserStrikeOutcome]
     ValueHistogram forearm_to_path_m{1e-4, 10.0};
+    // Per block, the fastest the blocking wrist or elbow moved relative to the shoulder while the fist came: captured
+    // and synthesized blocks, and a captured one's against the same move in its clip (no pop: at most 1).
+    ValueHistogram block_clip_arm_speed_mps{1e-3, 1e3}, synthesized_arm_speed_mps{1e-3, 1e3}, block_clip_speed_ratio{1e-3, 1e3};
     long long defence_joint_limit_violations = 0;
     double defence_foot_shift_m = 0.0; // the largest
     std::vector<std::array<long long, 2>> by_clip; // [database clip] strikes, hits (sized once, at the bout's start)
