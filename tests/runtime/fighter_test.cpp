@@ -156,7 +156,7 @@ TEST_CASE("fighter: a punching user's strikes are blocked or slipped with defenc
                 for (const FighterEvent& event : b.fighter->events()) b.events.push_back(event);
                 b.fighter->clear_events();
             }
-            int seen = 0, defended = 0, landed = 0, violations = 0, far_blocks = 0, head_blocks = 0, captured_at_head = 0;
+            int seen = 0, defended = 0, landed = 0, violations = 0, far_blocks = 0, head_blocks = 0, captured_at_head = 0, blocks = 0, captured = 0;
             double foot_shift = 0.0;
             for (const FighterEvent& e : b.events) {
                 if (e.type != FighterEvent::Type::user_strike_end) continue;
@@ -168,6 +168,8 @@ TEST_CASE("fighter: a punching user's strikes are blocked or slipped with defenc
                 foot_shift = std::max(foot_shift, e.foot_shift_m);
                 head_blocks += e.user_strike.at_head && is_block(e.user_strike.move);
                 captured_at_head += e.user_strike.at_head && e.user_strike.move == DefenceMove::block_clip;
+                blocks += is_block(e.user_strike.move);
+                captured += e.user_strike.move == DefenceMove::block_clip;
             }
             INFO(character << (defend ? " defending: " : " not defending: ") << seen << " user strikes, " << defended << " defended, " << landed
                            << " landed");
@@ -183,6 +185,9 @@ TEST_CASE("fighter: a punching user's strikes are blocked or slipped with defenc
                 INFO(captured_at_head << " of " << head_blocks << " blocks at the head captured");
                 CHECK(captured_at_head >= 0.7 * head_blocks);
                 CHECK(head_blocks > 0);
+                // And at the chest too (an age-uke's or a gedan-barai's sweep, where on the course it passes).
+                INFO(captured << " of " << blocks << " blocks captured");
+                CHECK(captured >= 0.7 * blocks);
             } else {
                 CHECK(landed >= 0.8 * seen);
             }
