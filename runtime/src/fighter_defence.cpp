@@ -43,6 +43,15 @@ Eigen::Vector3d contact_offset(const LimbChain& chain, const Eigen::Vector3d& ro
     return offset;
 }
 
+// `from` turned towards `to` (both from a limb's root) by `weight` of the angle between them, its length blended
+// alike: the extremity keeps its distance from the root all the way, as a straight blend does not.
+Eigen::Vector3d blend_about_root(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double weight) {
+    const double from_length = from.norm(), to_length = to.norm();
+    if (from_length < 1e-6 || to_length < 1e-6) return (1.0 - weight) * from + weight * to;
+    const Eigen::Quaterniond turn = Eigen::Quaterniond::Identity().slerp(weight, Eigen::Quaterniond::FromTwoVectors(from, to));
+    return (turn * from).normalized() * ((1.0 - weight) * from_length + weight * to_length);
+}
+
 } // namespace
 
 void Fighter::defend(double t_s) {
@@ -199,19 +208,27 @@ void Fighter::apply_defence() {
         m_block_played = std::min(lead, m_block_played + (m_now_s - m_block_played_s) * rate / ft);
         m_block_played_s = m_now_s;
         const double played = m_block_played;
-        const Eigen::Vector3d shoulder = before[anatomy.limbs[limb].root];
+        const LimbChain& chain = anatomy.limbs[limb];
+        const Eigen::Vector3d shoulder = before[chain.root];
+        const Eigen::Vector3d guard_extremity = m_defended_frame.extremity[limb]; // the undefended wrist, in its parent part
         m_block_clips.apply(m_defended_frame, anatomy, limb, choice.clip, choice.start_frame + played, block, shoulder, m_heading.yaw_rad);
         // The offset at the meeting frame, with the elbow bending as the clip's does there (as it will be decoded).
         const auto at_meet = m_block_clips.arm_points(anatomy, limb, choice.clip, choice.meet_frame, shoulder, m_heading.yaw_rad, Eigen::Vector3d::Zero());
-        const Eigen::Vector3d offset = contact_offset(anatomy.limbs[limb], shoulder, at_meet.wrist, limb_bend_direction(shoulder, at_meet.elbow, at_meet.wrist),
+        const Eigen::Vector3d offset = contact_offset(chain, shoulder, at_meet.wrist, limb_bend_direction(shoulder, at_meet.elbow, at_meet.wrist),
                                                       limb_swivel_reference(m_defended_frame, limb), m_defence.block_wrist_target());
-        pins.pinned[limb] = false;
-        pins.extremity_offset_world[limb] = block * smoothstep(played / lead) * offset;
-        asked = shoulder + m_defended_frame.part_frames[anatomy.limbs[limb].parent_part] * m_defended_frame.extremity[limb] * anatomy.limbs[limb].length() +
-                pins.extremity_offset_world[limb];
-        // The elbow bends as the clip's does (from the guard's, as the block blends in).
         const auto clip_arm =
             m_block_clips.arm_points(anatomy, limb, choice.clip, choice.start_frame + played, shoulder, m_heading.yaw_rad, Eigen::Vector3d::Zero());
+        // The wrist from the guard's to the clip's (offset), turned about the shoulder and its reach blended: a
+        // straight blend between them can pass by the shoulder, folding the arm shut and swinging the elbow round
+        // in a frame (the elbow moved 20-48 cm a frame in releases).
+        const Eigen::Quaterniond& parent = m_defended_frame.part_frames[chain.parent_part];
+        const Eigen::Vector3d wrist_in_block = clip_arm.wrist - shoulder + smoothstep(played / lead) * offset;
+        const Eigen::Vector3d wrist = blend_about_root(parent * guard_extremity * chain.length(), wrist_in_block, block);
+        m_defended_frame.extremity[limb] = parent.conjugate() * wrist / chain.length();
+        pins.pinned[limb] = false;
+        pins.extremity_offset_world[limb].setZero();
+        asked = shoulder + wrist;
+        // The elbow bends as the clip's does (from the guard's, as the block blends in).
         const Eigen::Vector3d blended = (1.0 - block) * bends[side] + block * limb_bend_direction(shoulder, clip_arm.elbow, clip_arm.wrist);
         if (blended.norm() > 1e-6) bends[side] = blended.normalized();
     } else if (block > 0.0) {
