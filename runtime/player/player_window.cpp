@@ -48,9 +48,11 @@ public:
         m_view->set_head_coupling(settings.coupling);
         m_view->set_projection(settings.camera);
         m_view->set_stereo(settings.stereo);
-        m_view->orbit_camera().target = {0.0f, 1.0f, 0.75f};
-        m_view->orbit_camera().distance_m = 4.5f;
-        m_view->orbit_camera().yaw_rad = 1.2f; // from the side: fighter and user both in view
+        constexpr float radians_per_degree = 3.14159265f / 180.0f;
+        m_view->orbit_camera().target = settings.orbit_target; // by default from the side: fighter and user both in view
+        m_view->orbit_camera().distance_m = settings.orbit_distance_m;
+        m_view->orbit_camera().yaw_rad = settings.orbit_yaw_deg * radians_per_degree;
+        m_view->orbit_camera().pitch_rad = settings.orbit_pitch_deg * radians_per_degree;
         m_view->set_overlay([this](QPainter& painter, const QRect& rect) { draw_hud(painter, rect); });
         m_view->setFocusPolicy(Qt::NoFocus);
         setFocusPolicy(Qt::StrongFocus);

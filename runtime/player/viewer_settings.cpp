@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <tuple>
 
 namespace kumite::view {
 namespace {
@@ -94,6 +95,28 @@ Result<ViewerSettings> viewer_settings_parse(std::string_view text, std::string_
         if (!json.contains(key)) continue;
         if (!json[key].is_boolean()) return make_error(ErrorCode::invalid, source + ": \"" + key + "\" must be true or false");
         *flag = json[key].get<bool>();
+    }
+    if (json.contains("orbit")) {
+        // {"yaw_deg": 30, "pitch_deg": 10, "distance_m": 3, "target": [0, 1.2, 0.6]}, every key optional.
+        const nlohmann::json& orbit = json["orbit"];
+        if (!orbit.is_object()) return make_error(ErrorCode::invalid, source + ": \"orbit\" must be an object (yaw_deg, pitch_deg, distance_m, target)");
+        const std::tuple<const char*, float*, double, double> numbers[] = {{"yaw_deg", &settings.orbit_yaw_deg, -360.0, 360.0},
+                                                                           {"pitch_deg", &settings.orbit_pitch_deg, -89.0, 89.0},
+                                                                           {"distance_m", &settings.orbit_distance_m, 0.1, 100.0}};
+        for (const auto& [key, out, lowest, highest] : numbers) {
+            if (!orbit.contains(key)) continue;
+            const nlohmann::json& value = orbit[key];
+            if (!value.is_number() || !(value.get<double>() >= lowest && value.get<double>() <= highest)) {
+                return make_error(ErrorCode::invalid, source + ": orbit." + key + " must be a number from " + std::to_string(int(lowest)) + " to " +
+                                                           std::to_string(int(highest)));
+            }
+            *out = value.get<float>();
+        }
+        if (orbit.contains("target")) {
+            Result<Eigen::Vector3f> target = read_point(orbit["target"], source + ": orbit.target");
+            if (!target) return target.error();
+            settings.orbit_target = *target;
+        }
     }
     if (json.contains("fullscreen")) {
         if (!json["fullscreen"].is_boolean()) return make_error(ErrorCode::invalid, source + ": \"fullscreen\" must be true or false");

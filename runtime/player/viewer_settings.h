@@ -21,6 +21,11 @@ struct ViewerSettings {
     bool fullscreen = false;
     bool bodies = true;            // skinned bodies where characters have them (false: capsules only)
     bool skeleton_overlay = false; // the bones drawn over the bodies (the B key)
+    // Where the orbit camera starts (the mouse moves it on): around the point it looks at, from the side by default.
+    float orbit_yaw_deg = 68.75f;    // about +Y; 0 looks along -Z, from in front of the fighter's start
+    float orbit_pitch_deg = 14.32f;  // positive looks down
+    float orbit_distance_m = 4.5f;
+    Eigen::Vector3f orbit_target{0.0f, 1.0f, 0.75f};
 };
 
 Result<ViewerSettings> viewer_settings_parse(std::string_view text, std::string_view source_name);

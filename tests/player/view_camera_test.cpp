@@ -70,9 +70,20 @@ TEST_CASE("view: viewer settings are read with clear errors", "[player]") {
     CHECK(good->stereo == StereoMode::side_by_side);
     CHECK(good->coupling.screen.lower_right.x() == 2.0f);
     CHECK(good->width == 800);
+    CHECK(good->orbit_yaw_deg == Approx(68.75f)); // the orbit camera's start, unchanged when not given
+    const auto orbit = viewer_settings_parse(R"({"orbit": {"yaw_deg": -30, "pitch_deg": 5, "distance_m": 2.5, "target": [0, 1.4, 0.6]}})", "room.json");
+    REQUIRE(orbit);
+    CHECK(orbit->orbit_yaw_deg == -30.0f);
+    CHECK(orbit->orbit_pitch_deg == 5.0f);
+    CHECK(orbit->orbit_distance_m == 2.5f);
+    CHECK(orbit->orbit_target.y() == Approx(1.4f));
     const std::pair<const char*, const char*> bad[] = {
         {"[1, 2", "not JSON"},
         {R"({"camera": "fisheye"})", "\"camera\""},
+        {R"({"orbit": [1, 2]})", "\"orbit\""},
+        {R"({"orbit": {"pitch_deg": 95}})", "orbit.pitch_deg"},
+        {R"({"orbit": {"distance_m": "far"}})", "orbit.distance_m"},
+        {R"({"orbit": {"target": [0, 1]}})", "orbit.target"},
         {R"({"stereo": true})", "\"stereo\""},
         {R"({"eye_separation_m": 3})", "eye_separation_m"},
         {R"({"screen": {"lower_left": [0, 0, 0], "lower_right": [1, 0, 0]}})", "screen.upper_left"},
