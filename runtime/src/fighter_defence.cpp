@@ -52,6 +52,10 @@ Eigen::Vector3d blend_about_root(const Eigen::Vector3d& from, const Eigen::Vecto
     return (turn * from).normalized() * ((1.0 - weight) * from_length + weight * to_length);
 }
 
+// A punch arriving this far below the chest joint or more is a low one (issue 26: the solar plexus, the belly): the
+// recorded boxers' body punches arrive 27 cm below it to 7 cm above, simulate:punch's at it.
+constexpr double k_low_punch_below_chest_m = 0.1;
+
 } // namespace
 
 void Fighter::defend(double t_s) {
@@ -111,10 +115,16 @@ void Fighter::start_block_clip(const RestAnatomy& anatomy, const DefenderBody& d
     const LimbChain& chain = anatomy.limbs[limb];
     BlockClipQuery query;
     query.limb = limb;
-    // Against the head the forearm rises over it (age-uke). Below the head, whichever sweep passes the course nearest:
-    // a gedan-barai's on its way down, an age-uke's on its way up (downward ones only: 54-100% of the blocks against
-    // simulate:punch were captured, the kid's 54%; either kind: 93-100%, more punches defended; README).
-    query.kind = m_defence.move_strike().at_head ? StrikeKind::rising : StrikeKind::none;
+    // Against the head the forearm rises over it (age-uke). A low punch (arriving a hand's breadth or more below the
+    // chest joint: the solar plexus, the belly) is swept down (gedan-barai). Between, at the chest, whichever sweep
+    // passes the course nearest: a gedan-barai's on its way down, an age-uke's on its way up (downward ones only:
+    // 54-100% of the blocks against simulate:punch were captured, the kid's 54%; either kind: 93-100%, more punches
+    // defended; README).
+    Eigen::Vector3d arrival = Eigen::Vector3d::Zero();
+    double arrival_s = 0.0;
+    m_defence.course_point(0.0, arrival, arrival_s);
+    const bool low = !m_defence.move_strike().at_head && arrival.y() < defender.chest.y() - k_low_punch_below_chest_m;
+    query.kind = m_defence.move_strike().at_head ? StrikeKind::rising : low ? StrikeKind::downward : StrikeKind::none;
     // Where on the course: from just outside the hit radius of the part it is aimed at (a fist blocked there has
     // not touched it yet) to `block_clip_span_m` further out, wherever the clip's forearm passes nearest.
     const DefenceSettings& settings = m_defence.settings();

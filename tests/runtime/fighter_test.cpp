@@ -693,3 +693,47 @@ TEST_CASE("fighter: a captured block's hold and release move the arm no faster t
     CHECK(within >= 0.65 * blocks);
     CHECK(worst <= 7.0);
 }
+
+TEST_CASE("fighter: a low punch is met by a downward captured block, one at the head by a rising one", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    if (!content) return;
+    // Issue 26: low attacks (a punch to the solar plexus) get a downward block. A straight punch of the user's right
+    // hand at 6 m/s from 0.9 m away to 20 cm below the fighter's chest joint, then one to its head.
+    for (const double below_chest : {0.2, -1.0}) { // -1: at the head
+        FighterSettings settings;
+        settings.defence.captured_blocks = true;
+        Bout b(content->view(), "brawler", settings);
+        const Eigen::Vector3d head(0.0, 1.65, 1.2);
+        UserHands hands;
+        hands.present = {true, true};
+        const Eigen::Vector3d guard_left = head + Eigen::Vector3d(0.15, -0.2, -0.2), guard_right = head + Eigen::Vector3d(-0.15, -0.2, -0.2);
+        hands.world = {guard_left, guard_right};
+        const UserStrikeEvent* seen = nullptr;
+        Eigen::Vector3d from = guard_right, direction = Eigen::Vector3d::Zero();
+        double launched = -1.0;
+        for (int frame = 0; frame < 4 * 60 && !seen; ++frame) {
+            const double t = frame / 60.0;
+            if (frame == 3 * 60) { // the fighter stands by now; the punch starts 0.9 m in front of its target
+                const Eigen::Vector3d chest = b.fighter->part_position(BodyPart::chest);
+                const Eigen::Vector3d target = below_chest < 0.0 ? b.fighter->part_position(BodyPart::head) : chest - Eigen::Vector3d(0.0, below_chest, 0.0);
+                Eigen::Vector3d toward_user = head - chest;
+                toward_user.y() = 0.0;
+                from = target + 0.9 * toward_user.normalized() + Eigen::Vector3d(0.0, 0.1, 0.0);
+                direction = (target - from).normalized();
+                launched = t;
+            }
+            if (launched >= 0.0) hands.world[1] = from + 6.0 * (t - launched) * direction;
+            b.fighter->step(t, &head, &hands);
+            for (const FighterEvent& e : b.fighter->events()) {
+                if (e.type == FighterEvent::Type::user_strike) b.events.push_back(e);
+            }
+            b.fighter->clear_events();
+            if (!b.events.empty()) seen = &b.events.front().user_strike;
+        }
+        REQUIRE(seen != nullptr);
+        INFO((below_chest < 0.0 ? "at the head: " : "low: ") << defence_move_name(seen->move) << ", clip " << seen->block_clip << ", seen at " << seen->t_s << " s, " << seen->time_to_impact_s << " s before the impact, at the head " << seen->at_head);
+        REQUIRE(seen->move == DefenceMove::block_clip);
+        const StrikeKind kind = b.db.clips[seen->block_clip].strike_kind();
+        CHECK(kind == (below_chest < 0.0 ? StrikeKind::rising : StrikeKind::downward));
+    }
+}
