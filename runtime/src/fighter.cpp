@@ -376,6 +376,7 @@ void Fighter::finish_frame() {
 }
 
 void Fighter::step(double t_s, const Eigen::Vector3d* head, const UserHands* hands) {
+    m_previous_step_s = m_now_s;
     m_now_s = t_s;
     m_hands = hands ? *hands : UserHands{};
     if (!m_started) {

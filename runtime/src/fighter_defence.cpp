@@ -87,9 +87,18 @@ void Fighter::defend(double t_s) {
     } else if (m_state == FighterState::hold) {
         allowed = Defence::Allowed{{false, false}, false};
     }
+    if (m_block_measure_from_shown && m_defence.active()) {
+        // A block started last frame, shown then at weight 0: its first step is measured from that pose.
+        const int side = m_defence.block_arm();
+        m_block_last_wrist = defender.wrist[side] - defender.shoulder[side];
+        m_block_last_elbow = defender.elbow[side] - defender.shoulder[side];
+        m_block_last_s = m_previous_step_s;
+    }
+    m_block_measure_from_shown = false;
     m_defence.update(t_s, m_hands, defender, allowed);
     if (m_defence.block_started()) {
         m_block_last_s = -1.0;
+        m_block_measure_from_shown = true;
         start_block_clip(anatomy, defender);
     }
     for (const UserStrikeEvent& seen : m_defence.events()) {

@@ -243,6 +243,7 @@ private:
     FighterState m_state = FighterState::rest;
     double m_state_since_s = 0.0;
     double m_now_s = 0.0;
+    double m_previous_step_s = -1.0; // the step before this one (< 0: none yet)
     bool m_started = false;
     // the head
     bool m_have_head = false;
@@ -256,6 +257,7 @@ private:
     BlockClipChoice m_block_choice;      // the one being played (block_clip moves)
     Eigen::Vector3d m_block_last_wrist = Eigen::Vector3d::Zero(), m_block_last_elbow = Eigen::Vector3d::Zero(); // relative to the shoulder
     double m_block_last_s = -1.0;        // when they were measured; < 0: not yet in this block
+    bool m_block_measure_from_shown = false; // a block started last frame: measured from the pose shown then
     double m_block_played = 0.0;         // clip frames of the captured block played since its start frame
     double m_block_played_s = 0.0;       // when
     MirFrame m_defended_frame;           // scratch: the shown frame with the defence's edits
