@@ -46,6 +46,15 @@ struct Bout {
             fighter->clear_events();
         }
     }
+    // One frame at `t` against a simulated user that strikes at the fighter's head and chest as they are now (as
+    // kumite play --tracker simulate:KIND); the user's head.
+    Eigen::Vector3d step_against(SimulatedUser& user, double t) {
+        user.set_opponent(fighter->part_position(BodyPart::head), fighter->part_position(BodyPart::chest));
+        const Eigen::Vector3d head = user.head(t);
+        const UserHands hands = user.hands(t);
+        fighter->step(t, &head, &hands);
+        return head;
+    }
     int count(FighterEvent::Type type) const {
         return static_cast<int>(std::count_if(events.begin(), events.end(), [&](const FighterEvent& e) { return e.type == type; }));
     }
@@ -134,10 +143,7 @@ TEST_CASE("fighter: a punching user's strikes are blocked or slipped with defenc
             double bone_error = 0.0, recorded_error = 0.0;
             for (int frame = 0; frame < 30 * 60; ++frame) {
                 const double t = frame / 60.0;
-                user.set_opponent(b.fighter->part_position(BodyPart::head), b.fighter->part_position(BodyPart::chest));
-                const Eigen::Vector3d head = user.head(t);
-                const UserHands hands = user.hands(t);
-                b.fighter->step(t, &head, &hands);
+                b.step_against(user, t);
                 if (b.fighter->defence().active()) { // the arms keep their bones while blocking or slipping
                     const auto positions = b.fighter->positions();
                     for (const Limb arm : {Limb::arm_l, Limb::arm_r}) {
@@ -610,10 +616,7 @@ TEST_CASE("fighter: a block against a chest punch keeps the forearm in front of 
     int chest_block_frames = 0;
     for (int frame = 0; frame < 60 * 60; ++frame) {
         const double t = frame / 60.0;
-        user.set_opponent(b.fighter->part_position(BodyPart::head), b.fighter->part_position(BodyPart::chest));
-        const Eigen::Vector3d head = user.head(t);
-        const UserHands hands = user.hands(t);
-        b.fighter->step(t, &head, &hands);
+        const Eigen::Vector3d head = b.step_against(user, t);
         b.fighter->clear_events();
         const Defence& defence = b.fighter->defence();
         if (!is_block(defence.move()) || defence.block_weight() <= 0.0 || defence.move_strike().at_head) continue;
@@ -663,10 +666,7 @@ TEST_CASE("fighter: a captured block's hold and release move the arm no faster t
         };
         for (int frame = 0; frame < 60 * 60; ++frame) {
             const double t = frame / 60.0;
-            user.set_opponent(b.fighter->part_position(BodyPart::head), b.fighter->part_position(BodyPart::chest));
-            const Eigen::Vector3d head = user.head(t);
-            const UserHands hands = user.hands(t);
-            b.fighter->step(t, &head, &hands);
+            b.step_against(user, t);
             for (const FighterEvent& e : b.fighter->events()) {
                 if (e.type == FighterEvent::Type::user_strike) close_block();
                 if (e.type == FighterEvent::Type::user_strike_end && e.user_strike.move == DefenceMove::block_clip) {
