@@ -35,7 +35,7 @@ const CommandSpec& play_spec() {
         "play",
         "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:HEAD[,LEFT,RIGHT]] | replay:FILE | simulate:KIND|FILE] "
         "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] "
-        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json]",
+        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json]",
         "Runs the fighter at 60 Hz against the user's head and hands (a DTrack system, a replayed CSV, or a\n"
         "simulated user) and the supervisor's commands, one per line: punch [left|right] [straight|hook|uppercut]\n"
         "[low|middle|high], kick [left|right] [front|roundhouse|side] [low|middle|high], slash [left|right] [low|middle|high],\n"
@@ -67,6 +67,8 @@ const CommandSpec& play_spec() {
          {"no-defence", "", "the fighter does not block or slip the user's strikes (also the command 'defence on|off', the viewer's D key)"},
          {"captured-blocks", "", "block punches with the database's captured blocks when one fits: rising at the head, rising or downward at\n"
                                  "the chest (events: move block_clip); else the block is synthesized from the guard"},
+         {"block-speed-limit", "RATIO", "captured blocks move the arm at most RATIO times as fast as their clip (1: no faster than captured, no pop);\n"
+                                        "a fist that leaves less time gets past the late forearm (default 0: no limit, every block in time)"},
          {"aim", "latched|predicted", "strike the head where it was at the order (default), or where it will be at the contact\n"
                                       "if it keeps its course (also the command 'aim latched|predicted' and the viewer's A key)"},
          {"record", "OUT.bvh|OUT.glb", "the first fighter's motion on the starting character (glTF: with its body)"},
@@ -101,6 +103,9 @@ int run_play(int argc, char** argv) {
     if (!lead_s) return usage_error(play_spec(), lead_s.error().message);
     const Result<double> steer_until_s = arguments.number("steer-until", 0.0, 5.0, FighterSettings{}.steer_until_s, "seconds");
     if (!steer_until_s) return usage_error(play_spec(), steer_until_s.error().message);
+    const Result<double> block_speed_limit = arguments.number("block-speed-limit", 0.0, 100.0, 0.0, "times the clip's speed");
+    if (!block_speed_limit) return usage_error(play_spec(), block_speed_limit.error().message);
+    if (*block_speed_limit > 0.0 && !arguments.has("captured-blocks")) return usage_error(play_spec(), "--block-speed-limit applies to --captured-blocks: add it");
     const Result<long long> plans_per_frame = arguments.integer("plans-per-frame", 0, 100000, BoutOptions{}.plans_per_frame);
     if (!plans_per_frame) return usage_error(play_spec(), plans_per_frame.error().message);
     FighterAim aim = FighterAim::latched;
@@ -175,6 +180,7 @@ int run_play(int argc, char** argv) {
     options.fighter.aim = aim;
     options.fighter.defence.enabled = !arguments.has("no-defence");
     options.fighter.defence.captured_blocks = arguments.has("captured-blocks");
+    options.fighter.defence.block_clip_max_speed_ratio = *block_speed_limit;
     options.fighter.variety_recent = static_cast<int>(*variety);
     options.record = arguments.value("record").has_value();
     if (std::optional<std::string> problem = options.record ? recording_path_problem(*arguments.value("record")) : std::nullopt) {

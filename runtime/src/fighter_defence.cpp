@@ -52,6 +52,33 @@ Eigen::Vector3d blend_about_root(const Eigen::Vector3d& from, const Eigen::Vecto
     return (turn * from).normalized() * ((1.0 - weight) * from_length + weight * to_length);
 }
 
+// The arm's move this frame cut to at most `max_step` (wrist and elbow, relative to the shoulder): the largest share
+// of the way from the arm shown last frame (`last_wrist`, `last_elbow`) to the asked one (`wrist`, its elbow bending
+// towards `bend`), the wrist turned about the shoulder as the block's blend turns it.
+void limit_arm_step(const LimbChain& chain, const Eigen::Vector3d& reference, const Eigen::Vector3d& last_wrist, const Eigen::Vector3d& last_elbow,
+                    double max_step, Eigen::Vector3d& wrist, Eigen::Vector3d& bend) {
+    const Eigen::Vector3d root = Eigen::Vector3d::Zero();
+    const Eigen::Vector3d last_bend = limb_bend_direction(root, last_elbow, last_wrist);
+    auto arm_at = [&](double share, Eigen::Vector3d& share_wrist, Eigen::Vector3d& share_bend) {
+        share_wrist = blend_about_root(last_wrist, wrist, share);
+        share_bend = (1.0 - share) * last_bend + share * bend;
+        share_bend = share_bend.norm() > 1e-6 ? Eigen::Vector3d(share_bend.normalized()) : bend;
+        const TwoBoneSolution solved = two_bone_ik(root, share_wrist, chain.upper_length, chain.lower_length,
+                                                   swivel_keeping_bend(root, share_wrist, share_bend, reference, 0.0), reference);
+        return std::max((solved.extremity - last_wrist).norm(), (solved.middle - last_elbow).norm());
+    };
+    Eigen::Vector3d share_wrist, share_bend;
+    if (arm_at(1.0, share_wrist, share_bend) <= max_step) return;
+    double low = 0.0, high = 1.0;
+    for (int pass = 0; pass < 10; ++pass) {
+        const double middle = 0.5 * (low + high);
+        (arm_at(middle, share_wrist, share_bend) <= max_step ? low : high) = middle;
+    }
+    arm_at(low, share_wrist, share_bend);
+    wrist = share_wrist;
+    bend = share_bend;
+}
+
 // A punch arriving this far below the chest joint or more is a low one (issue 26: the solar plexus, the belly): the
 // recorded boxers' body punches arrive 27 cm below it to 7 cm above, simulate:punch's at it.
 constexpr double k_low_punch_below_chest_m = 0.1;
@@ -242,14 +269,19 @@ void Fighter::apply_defence() {
         // in a frame (the elbow moved 20-48 cm a frame in releases).
         const Eigen::Quaterniond& parent = m_defended_frame.part_frames[chain.parent_part];
         const Eigen::Vector3d wrist_in_block = clip_arm.wrist - shoulder + smoothstep(played / lead) * offset;
-        const Eigen::Vector3d wrist = blend_about_root(parent * guard_extremity * chain.length(), wrist_in_block, block);
+        Eigen::Vector3d wrist = blend_about_root(parent * guard_extremity * chain.length(), wrist_in_block, block);
+        // The elbow bends as the clip's does (from the guard's, as the block blends in).
+        const Eigen::Vector3d blended = (1.0 - block) * bends[side] + block * limb_bend_direction(shoulder, clip_arm.elbow, clip_arm.wrist);
+        if (blended.norm() > 1e-6) bends[side] = blended.normalized();
+        // No faster than the clip allows (block_clip_max_speed_ratio): the arm lags where the fist leaves too little time.
+        if (const double ratio = m_defence.settings().block_clip_max_speed_ratio; ratio > 0.0 && m_block_last_s >= 0.0 && m_now_s > m_block_last_s) {
+            limit_arm_step(chain, limb_swivel_reference(m_defended_frame, limb), m_block_last_wrist, m_block_last_elbow,
+                           ratio * choice.clip_arm_speed_mps * (m_now_s - m_block_last_s), wrist, bends[side]);
+        }
         m_defended_frame.extremity[limb] = parent.conjugate() * wrist / chain.length();
         pins.pinned[limb] = false;
         pins.extremity_offset_world[limb].setZero();
         asked = shoulder + wrist;
-        // The elbow bends as the clip's does (from the guard's, as the block blends in).
-        const Eigen::Vector3d blended = (1.0 - block) * bends[side] + block * limb_bend_direction(shoulder, clip_arm.elbow, clip_arm.wrist);
-        if (blended.norm() > 1e-6) bends[side] = blended.normalized();
     } else if (block > 0.0) {
         // The wrist driven onto the hand's course.
         const Eigen::Vector3d natural = body.decoder.limb_targets()[block_limb]; // the undefended decode's wrist

@@ -50,6 +50,9 @@ struct DefenceSettings {
     bool captured_blocks = false;
     double block_clip_span_m = 0.15;  // a captured block meets the course between just outside the hit radius (the
                                       // radius and block_contact_m) and this much further out, where its forearm passes
+    double block_clip_max_speed_ratio = 0.0; // > 0: a captured block never moves the arm (wrist or elbow, relative to the
+                                             // shoulder) faster than this times its clip does; where the fist leaves too
+                                             // little time the forearm arrives late (the punch lands, or meets the guard)
     double block_clip_reach = 0.5;    // a captured block whose forearm would have to be moved further (arm lengths) to
                                       // meet the course is another movement: the synthesized block instead
 };
