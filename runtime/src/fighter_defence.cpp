@@ -54,17 +54,20 @@ Eigen::Vector3d blend_about_root(const Eigen::Vector3d& from, const Eigen::Vecto
 
 // The arm's move this frame cut to at most `max_step` (wrist and elbow, relative to the shoulder): the largest share
 // of the way from the arm shown last frame (`last_wrist`, `last_elbow`) to the asked one (`wrist`, its elbow bending
-// towards `bend`), the wrist turned about the shoulder as the block's blend turns it.
-void limit_arm_step(const LimbChain& chain, const Eigen::Vector3d& reference, const Eigen::Vector3d& last_wrist, const Eigen::Vector3d& last_elbow,
-                    double max_step, Eigen::Vector3d& wrist, Eigen::Vector3d& bend) {
+// towards `bend`; `swivel` where it has no bend), wrist and elbow turned about the shoulder as the block's blend
+// turns them, the elbow's bend then as the decoder will place it.
+void limit_arm_step(const LimbChain& chain, const Eigen::Vector3d& reference, double swivel, const Eigen::Vector3d& last_wrist,
+                    const Eigen::Vector3d& last_elbow, double max_step, Eigen::Vector3d& wrist, Eigen::Vector3d& bend) {
     const Eigen::Vector3d root = Eigen::Vector3d::Zero();
-    const Eigen::Vector3d last_bend = limb_bend_direction(root, last_elbow, last_wrist);
+    auto solve = [&](const Eigen::Vector3d& at, const Eigen::Vector3d& bending) {
+        return two_bone_ik(root, at, chain.upper_length, chain.lower_length, swivel_keeping_bend(root, at, bending, reference, swivel), reference);
+    };
+    const Eigen::Vector3d asked_elbow = solve(wrist, bend).middle;
     auto arm_at = [&](double share, Eigen::Vector3d& share_wrist, Eigen::Vector3d& share_bend) {
         share_wrist = blend_about_root(last_wrist, wrist, share);
-        share_bend = (1.0 - share) * last_bend + share * bend;
-        share_bend = share_bend.norm() > 1e-6 ? Eigen::Vector3d(share_bend.normalized()) : bend;
-        const TwoBoneSolution solved = two_bone_ik(root, share_wrist, chain.upper_length, chain.lower_length,
-                                                   swivel_keeping_bend(root, share_wrist, share_bend, reference, 0.0), reference);
+        share_bend = limb_bend_direction(root, blend_about_root(last_elbow, asked_elbow, share), share_wrist, 0.0);
+        if (share_bend.isZero()) share_bend = bend;
+        const TwoBoneSolution solved = solve(share_wrist, share_bend);
         return std::max((solved.extremity - last_wrist).norm(), (solved.middle - last_elbow).norm());
     };
     Eigen::Vector3d share_wrist, share_bend;
@@ -275,7 +278,7 @@ void Fighter::apply_defence() {
         if (blended.norm() > 1e-6) bends[side] = blended.normalized();
         // No faster than the clip allows (block_clip_max_speed_ratio): the arm lags where the fist leaves too little time.
         if (const double ratio = m_defence.settings().block_clip_max_speed_ratio; ratio > 0.0 && m_block_last_s >= 0.0 && m_now_s > m_block_last_s) {
-            limit_arm_step(chain, limb_swivel_reference(m_defended_frame, limb), m_block_last_wrist, m_block_last_elbow,
+            limit_arm_step(chain, limb_swivel_reference(m_defended_frame, limb), m_defended_frame.swivel[limb], m_block_last_wrist, m_block_last_elbow,
                            ratio * choice.clip_arm_speed_mps * (m_now_s - m_block_last_s), wrist, bends[side]);
         }
         m_defended_frame.extremity[limb] = parent.conjugate() * wrist / chain.length();
