@@ -71,11 +71,32 @@ ADDED = {
     ("hachaj-kata/pinian_nidan.bvh", "hand_l", 2192): "straight",
     ("hachaj-kata/fukyugata_ni.bvh", "hand_l", 2698): "straight",
     ("hachaj-kata/1-pinian_shodan.bvh", "hand_r", 1146): "straight",
+    # Fukyugata Ni's first punch by the second performer: the right arm held straight at head height, with the bend,
+    # height and hold of the first performer's 494 (annotated by the rules); added to the file by hand on
+    # 2026-11-27 and written down here since.
+    ("hachaj-kata/fukyugata_ni.bvh", "hand_r", 620): "straight",
     # Fukyugata Ni (Gekisai Dai Ichi) follows each front kick with an elbow strike: the elbow driven up in front to
     # head height, the fist folded by the ear, 0.6-1.0 s after the kick of the same side.
     ("hachaj-kata/fukyugata_ni.bvh", "forearm_l", 1906): "elbow",
     ("hachaj-kata/fukyugata_ni.bvh", "forearm_r", 2589): "elbow",
     ("hachaj-kata/0.2-fukyugata_ni.bvh", "forearm_l", 1520): "elbow",
+    # Pinan Shodan's middle blocks (issue 26: blocks for punches at the chest), found by a scan for the forearm's
+    # contact point sweeping 20 cm or more sideways at chest height and stopping with the forearm upright (the wrist
+    # above the elbow by 0.6 of the forearm), the elbow bent 60-120 degrees, the wrist 20 cm or more in front of the
+    # chest; hit where the sideways sweep falls under a fifth of its fastest. Accepted on filmstrips of the 0.3 s
+    # before to 0.15 s after: outward (chudan uchi-uke) — the forearm folded across the chest sweeps out to its own
+    # side and stops upright, the elbow bent square in front of the shoulder; inward — the forearm swings in from
+    # the side to stop upright in front of the face. Rejected there, 7: Danuta's 2027 (the forearm only turns up,
+    # the arm already out), Pinan Nidan 610 and Marcin's 224, 234 (the kata's opening, both arms at once), 501 and
+    # 3475 (a few centimetres, the arm folded throughout), Fukyugata Ni 3043 (a hooking swing, not stopped upright).
+    ("hachaj-kata/1-pinian_shodan.bvh", "forearm_r", 288): "inward",
+    ("hachaj-kata/1-pinian_shodan.bvh", "forearm_r", 913): "outward",
+    ("hachaj-kata/1-pinian_shodan.bvh", "forearm_l", 1044): "outward",
+    ("hachaj-kata/1-pinian_shodan.bvh", "forearm_l", 1310): "outward",
+    ("hachaj-kata/1-pinian_shodan.bvh", "forearm_r", 1447): "outward",
+    ("hachaj-kata/1-pinian_shodan.bvh", "forearm_r", 1583): "outward",
+    ("hachaj-kata/1-pinian_shodan.bvh", "forearm_l", 1702): "outward",
+    ("hachaj-kata/pinian_shodan.bvh", "forearm_l", 1134): "outward",
 }
 # Candidates the eye rejected: (source, segment, rule frame or hit frame) -> reason.
 _BLOCK = "the hand comes down onto its line from above, the arm angled down: a knife-hand or down-block"
@@ -495,6 +516,11 @@ def main():
         for (source, segment, hit), kind in ADDED.items():
             if source.startswith(folder + "/"):
                 side = "left" if segment.endswith("_l") else "right"
+                if kind in ("inward", "outward"):
+                    block = clip(captures[source], "block", segment, side, hit, kind, tail_s=0.5)
+                    block["height"] = block_height(captures[source], segment[-1], hit)
+                    clips.append(block)
+                    continue
                 semantics, kind = ("elbow", "other") if kind == "elbow" else ("punch", kind)
                 clips.append(clip(captures[source], semantics, segment, side, hit, kind, tail_s=0.5))
         clips.sort(key=lambda c: (c["source"], c["hit_frame"]))
@@ -524,7 +550,8 @@ def main():
                   "shorinryu-knees": lambda c: c["source"].startswith("hachaj-shorinryu") and c["semantics"] == "knee",
                   "shorinryu-elbows": lambda c: c["source"].startswith("hachaj-shorinryu") and c["semantics"] == "elbow",
                   "shorinryu-blocks": lambda c: c["source"].startswith("hachaj-shorinryu") and c["semantics"] == "block",
-                  "kata": lambda c: c["source"].startswith("hachaj-kata"),
+                  "kata": lambda c: c["source"].startswith("hachaj-kata") and c["semantics"] != "block",
+                  "kata-blocks": lambda c: c["source"].startswith("hachaj-kata") and c["semantics"] == "block",
                   "boxing": lambda c: c["source"].startswith("cmu14-boxing")}
         every = [c for folder in FOLDERS for c in new_clips[folder]]
         for name, keep in groups.items():
