@@ -147,6 +147,10 @@ nlohmann::json bout_start_json(const Bout& bout, const PlaySetup& setup) {
                            {"database", setup.database},
                            {"seed", setup.seed},
                            {"sample_period_s", k_track_period_s}};
+    // Which blocks answer the user's punches: captured ones (and their speed limit, when one is set) or synthesized.
+    const DefenceSettings& defence = bout.fighter(0).defence().settings();
+    line["blocks"] = defence.captured_blocks ? "captured" : "synthesized";
+    if (defence.captured_blocks && defence.block_clip_max_speed_ratio > 0.0) line["block_speed_limit"] = defence.block_clip_max_speed_ratio;
     return line;
 }
 

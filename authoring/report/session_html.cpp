@@ -224,6 +224,10 @@ std::string session_html(const SessionLog& log, const nlohmann::json* play_repor
     for (const auto& [label, key] : {std::pair{"character at the start", "character"}, {"aim", "aim"}, {"defence", "defence"}, {"tracker", "tracker"}, {"seed", "seed"}}) {
         if (const std::string value = json_text(start, key); !value.empty()) html += row(label, escape_html(value));
     }
+    if (const std::string blocks = json_text(start, "blocks"); !blocks.empty()) {
+        const std::optional<double> limit = json_number(start, {"block_speed_limit"});
+        html += row("blocks", escape_html(blocks) + (limit ? ", the arm at most " + fixed(*limit, 2) + " times as fast as its clip" : std::string()), "blocks");
+    }
     if (log.tracker_source) {
         html += row("user", "recorded person: " + escape_html(json_text(&*log.tracker_source, "capture")) + ", " +
                                 fixed(json_number(&*log.tracker_source, {"distance_m"}).value_or(0.0), 2) + " m away");

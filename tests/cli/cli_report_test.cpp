@@ -73,6 +73,8 @@ TEST_CASE("cli: report and play --html draw the bout's events, counts equal to t
         INFO(page);
         const std::string html = read_text(folder / page);
         CHECK(summary_count(html, "n-strikes") == types["strike"]);
+        // The bout's blocks as its bout_start says: synthesized here (no --captured-blocks).
+        CHECK(html.find("<th>blocks</th><td class=\"n blocks\">synthesized</td>") != std::string::npos);
         CHECK(summary_count(html, "n-hits") == hits);
         CHECK(summary_count(html, "n-orders") == report["orders"].get<long long>());
         CHECK(summary_count(html, "n-performed") == types["order_performed"]);

@@ -92,6 +92,7 @@ class Defence {
 public:
     explicit Defence(DefenceSettings settings = {}) : m_settings(settings) {}
     DefenceSettings& settings() { return m_settings; }
+    const DefenceSettings& settings() const { return m_settings; }
     bool enabled() const { return m_settings.enabled; }
 
     // One frame: the user's hands, the fighter's body, which moves may start: blocks with which arms ([left,
