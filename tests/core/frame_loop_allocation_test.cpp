@@ -8,6 +8,7 @@
 #include "kumite/formats/character_body.h"
 #include "kumite/formats/motion_database_file.h"
 #include "support/allocation_counter.h"
+#include "support/reference_database.h"
 #include "support/standing_character.h"
 #include "support/test_paths.h"
 
@@ -156,4 +157,22 @@ TEST_CASE("bout: a step allocates nothing against a recorded boxer, steering str
     CHECK((*bout)->counters().strikes >= 5);
     CHECK((*bout)->counters().orders_queued >= 3);
     CHECK((*bout)->counters().user_strikes >= 1); // the boxer's punches reached the fighter: the defence ran
+}
+
+TEST_CASE("bout: a step allocates nothing while captured blocks, limited to their clip's speed, meet a punching user", "[core][corpus]") {
+    const MotionDatabaseContent* content = kumite::test::reference_database(); // the golden database holds no blocks
+    if (!content) return;
+    const kumite::test::StandingCharacter brawler("brawler", content->view());
+    Result<std::unique_ptr<HeadTracker>> tracker = HeadTracker::open("simulate:punch", DtrackConfig{}, 5);
+    REQUIRE(tracker);
+    BoutOptions options;
+    options.fighter.defence.captured_blocks = true;
+    options.fighter.defence.block_clip_max_speed_ratio = 1.0;
+    Result<std::unique_ptr<Bout>> bout = Bout::create(content->view(), {{"brawler", brawler.file, nullptr}}, std::move(*tracker), options);
+    REQUIRE(bout);
+    (*bout)->step(0.0);
+    kumite::test::AllocationScope scope;
+    for (int frame = 1; frame < 20 * 60; ++frame) (*bout)->step(frame / 60.0);
+    CHECK(scope.count() == 0);
+    CHECK((*bout)->counters().block_clips >= 3);
 }
