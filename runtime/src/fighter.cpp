@@ -162,6 +162,7 @@ void Fighter::set_character(int index) {
     if (index < 0 || index >= static_cast<int>(m_bodies.size()) || index == m_character) return;
     m_character = index;
     m_defence.reset();
+    m_block_lagging = false; // the last arm shown was the other body's
     FighterEvent event;
     event.type = FighterEvent::Type::character;
     event.t_s = m_now_s;
@@ -405,6 +406,7 @@ void Fighter::step(double t_s, const Eigen::Vector3d* head, const UserHands* han
         m_tracking = false;
         m_head_motion.reset();
         m_defence.reset();
+        m_block_lagging = false;
         FighterEvent event;
         event.type = FighterEvent::Type::tracker_lost;
         event.t_s = t_s;

@@ -56,7 +56,8 @@ Eigen::Vector3d blend_about_root(const Eigen::Vector3d& from, const Eigen::Vecto
 // of the way from the arm shown last frame (`last_wrist`, `last_elbow`) to the asked one (`wrist`, its elbow bending
 // towards `bend`; `swivel` where it has no bend), wrist and elbow turned about the shoulder as the block's blend
 // turns them, the elbow's bend then as the decoder will place it.
-void limit_arm_step(const LimbChain& chain, const Eigen::Vector3d& reference, double swivel, const Eigen::Vector3d& last_wrist,
+// Whether it had to.
+bool limit_arm_step(const LimbChain& chain, const Eigen::Vector3d& reference, double swivel, const Eigen::Vector3d& last_wrist,
                     const Eigen::Vector3d& last_elbow, double max_step, Eigen::Vector3d& wrist, Eigen::Vector3d& bend) {
     const Eigen::Vector3d root = Eigen::Vector3d::Zero();
     auto solve = [&](const Eigen::Vector3d& at, const Eigen::Vector3d& bending) {
@@ -71,7 +72,7 @@ void limit_arm_step(const LimbChain& chain, const Eigen::Vector3d& reference, do
         return std::max((solved.extremity - last_wrist).norm(), (solved.middle - last_elbow).norm());
     };
     Eigen::Vector3d share_wrist, share_bend;
-    if (arm_at(1.0, share_wrist, share_bend) <= max_step) return;
+    if (arm_at(1.0, share_wrist, share_bend) <= max_step) return false;
     double low = 0.0, high = 1.0;
     for (int pass = 0; pass < 10; ++pass) {
         const double middle = 0.5 * (low + high);
@@ -80,6 +81,7 @@ void limit_arm_step(const LimbChain& chain, const Eigen::Vector3d& reference, do
     arm_at(low, share_wrist, share_bend);
     wrist = share_wrist;
     bend = share_bend;
+    return true;
 }
 
 // A punch arriving this far below the chest joint or more is a low one (issue 26: the solar plexus, the belly): the
@@ -204,7 +206,11 @@ void Fighter::start_block_clip(const RestAnatomy& anatomy, const DefenderBody& d
 void Fighter::apply_defence() {
     m_defence_shown = false;
     const double block = m_defence.block_weight(), slip = m_defence.slip_weight();
-    if (block <= 0.0 && slip <= 0.0) return;
+    // A captured block's arm held back to its clip's speed may still be on its way to the guard when the move ends:
+    // it goes on there at that speed (not in one frame), unless the fighter strikes or moves again.
+    const bool lagging = m_block_lagging && m_defence.move() == DefenceMove::none && m_state != FighterState::strike;
+    m_block_lagging = false;
+    if (block <= 0.0 && slip <= 0.0 && !lagging) return;
     Body& body = *m_bodies[m_character];
     const RestAnatomy& anatomy = body.rig->anatomy();
     // The undefended pose: the shown decode, or a strike's adapted frame (decoded again from its MIR frame, for the
@@ -242,7 +248,22 @@ void Fighter::apply_defence() {
     const int block_side = m_defence.block_arm();
     const int block_limb = block_side == 0 ? int(Limb::arm_l) : int(Limb::arm_r);
     Eigen::Vector3d asked = Eigen::Vector3d::Zero(); // where the blocking wrist is asked to go
-    if (block > 0.0 && m_defence.move() == DefenceMove::block_clip) {
+    if (lagging) {
+        // On to the guard's wrist and bend (this frame's undefended arm) at the clip's speed.
+        const LimbChain& chain = anatomy.limbs[block_limb];
+        const Eigen::Quaterniond& parent = m_defended_frame.part_frames[chain.parent_part];
+        Eigen::Vector3d wrist = parent * m_defended_frame.extremity[block_limb] * chain.length();
+        const double ratio = m_defence.settings().block_clip_max_speed_ratio > 0.0 ? std::min(m_defence.settings().block_clip_max_speed_ratio, 1.0) : 1.0;
+        if (m_block_last_s >= 0.0 && m_now_s > m_block_last_s) {
+            m_block_lagging = limit_arm_step(chain, limb_swivel_reference(m_defended_frame, block_limb), m_defended_frame.swivel[block_limb],
+                                             m_block_last_wrist, m_block_last_elbow, ratio * m_block_choice.clip_arm_speed_mps * (m_now_s - m_block_last_s), wrist,
+                                             bends[block_side]);
+        }
+        m_defended_frame.extremity[block_limb] = parent.conjugate() * wrist / chain.length();
+        pins.pinned[block_limb] = false;
+        pins.extremity_offset_world[block_limb].setZero();
+        asked = before[chain.root] + wrist;
+    } else if (block > 0.0 && m_defence.move() == DefenceMove::block_clip) {
         // The captured block's arm at the played frame over the shown pose, its wrist offset so that the forearm's
         // contact meets the course at the clip's meeting frame (the offset grows with the clip's progress).
         const int side = m_defence.block_arm();
@@ -276,10 +297,14 @@ void Fighter::apply_defence() {
         // The elbow bends as the clip's does (from the guard's, as the block blends in).
         const Eigen::Vector3d blended = (1.0 - block) * bends[side] + block * limb_bend_direction(shoulder, clip_arm.elbow, clip_arm.wrist);
         if (blended.norm() > 1e-6) bends[side] = blended.normalized();
-        // No faster than the clip allows (block_clip_max_speed_ratio): the arm lags where the fist leaves too little time.
-        if (const double ratio = m_defence.settings().block_clip_max_speed_ratio; ratio > 0.0 && m_block_last_s >= 0.0 && m_now_s > m_block_last_s) {
-            limit_arm_step(chain, limb_swivel_reference(m_defended_frame, limb), m_defended_frame.swivel[limb], m_block_last_wrist, m_block_last_elbow,
-                           ratio * choice.clip_arm_speed_mps * (m_now_s - m_block_last_s), wrist, bends[side]);
+        // No faster than the clip allows (block_clip_max_speed_ratio): the arm lags where the fist leaves too little
+        // time. Once the fist has reached the meeting point (or its strike is over) there is time: the hold and the release
+        // back to the guard never move the arm faster than the clip, limit or not.
+        double ratio = m_defence.settings().block_clip_max_speed_ratio;
+        if (m_defence.move_strike_over() || m_defence.time_to_block_point() <= 0.0) ratio = ratio > 0.0 ? std::min(ratio, 1.0) : 1.0;
+        if (ratio > 0.0 && m_block_last_s >= 0.0 && m_now_s > m_block_last_s) {
+            m_block_lagging = limit_arm_step(chain, limb_swivel_reference(m_defended_frame, limb), m_defended_frame.swivel[limb], m_block_last_wrist,
+                                             m_block_last_elbow, ratio * choice.clip_arm_speed_mps * (m_now_s - m_block_last_s), wrist, bends[side]);
         }
         m_defended_frame.extremity[limb] = parent.conjugate() * wrist / chain.length();
         pins.pinned[limb] = false;
@@ -292,7 +317,7 @@ void Fighter::apply_defence() {
         pins.extremity_offset_world[block_limb] = block * (m_defence.block_wrist_target() - natural);
         asked = natural + pins.extremity_offset_world[block_limb];
     }
-    if (block > 0.0) {
+    if (block > 0.0 || lagging) {
         // The elbow keeps its bend (the guard's, or the captured clip's) carried over to the new shoulder->wrist line,
         // as strikes keep their clip's bends, so it cannot flip.
         m_defended_frame.swivel[block_limb] = swivel_keeping_bend(before[anatomy.limbs[block_limb].root], asked, bends[block_side],
@@ -313,7 +338,7 @@ void Fighter::apply_defence() {
         m_defence_foot_shift_m = std::max(m_defence_foot_shift_m, (ankle - ankles[side]).norm());
     }
     m_defence_violations += joint_violation_count(violations);
-    if (block > 0.0) {
+    if (block > 0.0 || lagging) {
         // The blocking arm's fastest move relative to its shoulder, for the block's event (no pop: measured against
         // the captured clip's own).
         const LimbChain& arm = anatomy.limbs[m_defence.block_arm() == 0 ? int(Limb::arm_l) : int(Limb::arm_r)];

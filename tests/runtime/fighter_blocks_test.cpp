@@ -98,15 +98,16 @@ TEST_CASE("fighter: a block against a chest punch keeps the forearm in front of 
     CHECK(deepest > 0.0);
 }
 
-TEST_CASE("fighter: a captured block's hold and release move the arm no faster than its clip, mostly", "[runtime][corpus]") {
+TEST_CASE("fighter: a captured block's hold and release move the arm no faster than its clip", "[runtime][corpus]") {
     const MotionDatabaseContent* content = reference_database();
     if (!content) return;
-    // A minute of simulate:punch on three characters, captured blocks on. After the fist's strike ends the arm holds,
-    // then returns to the guard; its fastest move there (wrist or elbow relative to the shoulder) against the clip's
-    // own. A straight blend of the wrist between the block and the guard passed by the shoulder, folding the arm shut
-    // and swinging the elbow round (20-48 cm in a frame): here 51 of 84 blocks within the clip's speed, at worst 7.7
-    // times; turned about the shoulder, 57 of 84 and at worst 6.4 times (2026-11-27; five characters: 55% and 9.5
-    // times, 65% and 6.4 times). The bout is seeded: the same every run.
+    // A minute of simulate:punch on three characters, captured blocks on (no speed limit asked). After the fist's
+    // strike ends the arm holds, then returns to the guard; its fastest move there (wrist or elbow relative to the
+    // shoulder, up to the first frame back on the guard) against the clip's own. A straight blend of the wrist
+    // between the block and the guard passed by the shoulder, folding the arm shut and swinging the elbow round
+    // (20-48 cm in a frame): 51 of 84 blocks within the clip's speed, at worst 7.7 times; turned about the shoulder,
+    // 57 of 84 and at worst 6.4 times; with the arm kept within its clip's speed once the fist's strike is over,
+    // 84 of 84 and at worst 1.0 times (2026-11-27). The bout is seeded: the same every run. 1% allowed for rounding.
     int blocks = 0, within = 0;
     double worst = 0.0;
     for (const char* character : {"brawler", "runner", "giant"}) {
@@ -116,15 +117,17 @@ TEST_CASE("fighter: a captured block's hold and release move the arm no faster t
         const RestAnatomy& anatomy = b.brawler.rig->anatomy();
         SimulatedUser user(SimulatedKind::punch, 1);
         double clip_speed = -1.0, fastest = 0.0, last_t = -1.0;
+        int limb = 0;
         Eigen::Vector3d last_wrist = Eigen::Vector3d::Zero(), last_elbow = Eigen::Vector3d::Zero();
         auto close_block = [&] {
             if (clip_speed > 0.0 && fastest > 0.0) {
                 ++blocks;
-                within += fastest <= clip_speed;
+                within += fastest <= 1.01 * clip_speed;
                 worst = std::max(worst, fastest / clip_speed);
             }
             clip_speed = -1.0;
             fastest = 0.0;
+            last_t = -1.0;
         };
         for (int frame = 0; frame < 60 * 60; ++frame) {
             const double t = frame / 60.0;
@@ -138,22 +141,24 @@ TEST_CASE("fighter: a captured block's hold and release move the arm no faster t
             }
             b.fighter->clear_events();
             const Defence& defence = b.fighter->defence();
-            if (clip_speed <= 0.0 || defence.move() != DefenceMove::block_clip) {
+            const bool on = defence.move() == DefenceMove::block_clip;
+            if (clip_speed <= 0.0 || (!on && last_t < 0.0)) {
                 close_block();
                 continue;
             }
-            const LimbChain& arm = anatomy.limbs[defence.block_arm() == 0 ? int(Limb::arm_l) : int(Limb::arm_r)];
+            if (on) limb = defence.block_arm() == 0 ? int(Limb::arm_l) : int(Limb::arm_r);
+            const LimbChain& arm = anatomy.limbs[limb];
             const auto positions = b.fighter->positions();
             const Eigen::Vector3d wrist = positions[arm.extremity] - positions[arm.root], elbow = positions[arm.middle] - positions[arm.root];
             if (last_t >= 0.0) fastest = std::max(fastest, std::max((wrist - last_wrist).norm(), (elbow - last_elbow).norm()) / (t - last_t));
             last_wrist = wrist, last_elbow = elbow, last_t = t;
+            if (!on) close_block(); // the release is over: this frame, back on the guard, was the last measured
         }
         close_block();
     }
     INFO(within << " of " << blocks << " blocks held and released within the clip's speed; at worst " << worst << " times it");
     CHECK(blocks >= 40);
-    CHECK(within >= 0.65 * blocks);
-    CHECK(worst <= 7.0);
+    CHECK(within == blocks);
 }
 
 TEST_CASE("fighter: a low punch is met by a downward captured block, one at the head by a rising one", "[runtime][corpus]") {

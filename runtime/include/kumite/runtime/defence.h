@@ -126,6 +126,8 @@ public:
     bool course_point(double before_m, Eigen::Vector3d& point, double& time_s) const;
     // How long the fist still needs to the block's meeting point (block_wrist_target), along its course now; 0 once past.
     double time_to_block_point() const;
+    // The strike the move answers is over (blocked, landed, gone back): what is left is the hold and the release.
+    bool move_strike_over() const { return m_move_hand < 0 || !m_hands[m_move_hand].striking; }
     // The blocking arm's speed this frame (relative to its shoulder), for the block's event.
     void note_arm_speed(double speed_mps);
     const Eigen::Vector3d& block_wrist_target() const { return m_wrist_target; }

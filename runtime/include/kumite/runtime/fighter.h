@@ -258,6 +258,7 @@ private:
     Eigen::Vector3d m_block_last_wrist = Eigen::Vector3d::Zero(), m_block_last_elbow = Eigen::Vector3d::Zero(); // relative to the shoulder
     double m_block_last_s = -1.0;        // when they were measured; < 0: not yet in this block
     bool m_block_measure_from_shown = false; // a block started last frame: measured from the pose shown then
+    bool m_block_lagging = false;        // the arm was held back to its clip's speed last frame: not where the blend put it
     double m_block_played = 0.0;         // clip frames of the captured block played since its start frame
     double m_block_played_s = 0.0;       // when
     MirFrame m_defended_frame;           // scratch: the shown frame with the defence's edits
