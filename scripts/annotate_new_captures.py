@@ -17,7 +17,8 @@ sheets. Where the eye disagreed with a rule the clip is fixed in FIXES / EXCLUDE
   first whose rise or fall is under a fifth of that.
 - hachaj-kata: kicks where a foot rises above half the leg length and reaches out while the other foot stands
   (the kata's front and side kicks); punches where the wrist reaches out in front of the chest, below the head, with the arm near straight
-  after a fast move (the kata's oi-zuki and gyaku-zuki); blocks (wrist above the head or below the hip) stay out.
+  after a fast move (the kata's oi-zuki and gyaku-zuki); blocks (wrist above the head or below the hip) stay out of
+  the rules: Pinan Shodan's middle blocks are in ADDED, each accepted by eye.
 - cmu14-boxing: punches where the wrist is far from the chest after a fast move; kind by eye from the contact sheet
   (straight: the fist travels along the line; hook: it sweeps across; uppercut: it rises).
 
