@@ -248,22 +248,15 @@ void Fighter::apply_defence() {
     const int block_side = m_defence.block_arm();
     const int block_limb = block_side == 0 ? int(Limb::arm_l) : int(Limb::arm_r);
     Eigen::Vector3d asked = Eigen::Vector3d::Zero(); // where the blocking wrist is asked to go
+    // A captured block's arm (or one still on its way back to the guard): its wrist (relative to the shoulder, world
+    // axes) and elbow bend asked this frame, then held to the clip's speed.
+    const bool captured_arm = lagging || (block > 0.0 && m_defence.move() == DefenceMove::block_clip);
+    Eigen::Vector3d clip_wrist = Eigen::Vector3d::Zero();
     if (lagging) {
-        // On to the guard's wrist and bend (this frame's undefended arm) at the clip's speed.
+        // On to the guard's wrist and bend (this frame's undefended arm).
         const LimbChain& chain = anatomy.limbs[block_limb];
-        const Eigen::Quaterniond& parent = m_defended_frame.part_frames[chain.parent_part];
-        Eigen::Vector3d wrist = parent * m_defended_frame.extremity[block_limb] * chain.length();
-        const double ratio = m_defence.settings().block_clip_max_speed_ratio > 0.0 ? std::min(m_defence.settings().block_clip_max_speed_ratio, 1.0) : 1.0;
-        if (m_block_last_s >= 0.0 && m_now_s > m_block_last_s) {
-            m_block_lagging = limit_arm_step(chain, limb_swivel_reference(m_defended_frame, block_limb), m_defended_frame.swivel[block_limb],
-                                             m_block_last_wrist, m_block_last_elbow, ratio * m_block_choice.clip_arm_speed_mps * (m_now_s - m_block_last_s), wrist,
-                                             bends[block_side]);
-        }
-        m_defended_frame.extremity[block_limb] = parent.conjugate() * wrist / chain.length();
-        pins.pinned[block_limb] = false;
-        pins.extremity_offset_world[block_limb].setZero();
-        asked = before[chain.root] + wrist;
-    } else if (block > 0.0 && m_defence.move() == DefenceMove::block_clip) {
+        clip_wrist = m_defended_frame.part_frames[chain.parent_part] * m_defended_frame.extremity[block_limb] * chain.length();
+    } else if (captured_arm) {
         // The captured block's arm at the played frame over the shown pose, its wrist offset so that the forearm's
         // contact meets the course at the clip's meeting frame (the offset grows with the clip's progress).
         const int side = m_defence.block_arm();
@@ -293,29 +286,33 @@ void Fighter::apply_defence() {
         // in a frame (the elbow moved 20-48 cm a frame in releases).
         const Eigen::Quaterniond& parent = m_defended_frame.part_frames[chain.parent_part];
         const Eigen::Vector3d wrist_in_block = clip_arm.wrist - shoulder + smoothstep(played / lead) * offset;
-        Eigen::Vector3d wrist = blend_about_root(parent * guard_extremity * chain.length(), wrist_in_block, block);
+        clip_wrist = blend_about_root(parent * guard_extremity * chain.length(), wrist_in_block, block);
         // The elbow bends as the clip's does (from the guard's, as the block blends in).
         const Eigen::Vector3d blended = (1.0 - block) * bends[side] + block * limb_bend_direction(shoulder, clip_arm.elbow, clip_arm.wrist);
         if (blended.norm() > 1e-6) bends[side] = blended.normalized();
-        // No faster than the clip allows (block_clip_max_speed_ratio): the arm lags where the fist leaves too little
-        // time. Once the fist has reached the meeting point (or its strike is over) there is time: the hold and the release
-        // back to the guard never move the arm faster than the clip, limit or not.
-        double ratio = m_defence.settings().block_clip_max_speed_ratio;
-        if (m_defence.move_strike_over() || m_defence.time_to_block_point() <= 0.0) ratio = ratio > 0.0 ? std::min(ratio, 1.0) : 1.0;
-        if (ratio > 0.0 && m_block_last_s >= 0.0 && m_now_s > m_block_last_s) {
-            m_block_lagging = limit_arm_step(chain, limb_swivel_reference(m_defended_frame, limb), m_defended_frame.swivel[limb], m_block_last_wrist,
-                                             m_block_last_elbow, ratio * choice.clip_arm_speed_mps * (m_now_s - m_block_last_s), wrist, bends[side]);
-        }
-        m_defended_frame.extremity[limb] = parent.conjugate() * wrist / chain.length();
-        pins.pinned[limb] = false;
-        pins.extremity_offset_world[limb].setZero();
-        asked = shoulder + wrist;
     } else if (block > 0.0) {
         // The wrist driven onto the hand's course.
         const Eigen::Vector3d natural = body.decoder.limb_targets()[block_limb]; // the undefended decode's wrist
         pins.pinned[block_limb] = false;
         pins.extremity_offset_world[block_limb] = block * (m_defence.block_wrist_target() - natural);
         asked = natural + pins.extremity_offset_world[block_limb];
+    }
+    if (captured_arm) {
+        // No faster than the clip allows (block_clip_max_speed_ratio): the arm lags where the fist leaves too little
+        // time. Once the fist has reached the meeting point (or its strike is over) there is time: the hold and the
+        // release back to the guard never move the arm faster than the clip, limit or not.
+        double speed_ratio = m_defence.settings().block_clip_max_speed_ratio; // 0: no limit
+        if (lagging || m_defence.move_strike_over() || m_defence.time_to_block_point() <= 0.0) speed_ratio = speed_ratio > 0.0 ? std::min(speed_ratio, 1.0) : 1.0;
+        const LimbChain& chain = anatomy.limbs[block_limb];
+        if (speed_ratio > 0.0 && m_block_last_s >= 0.0 && m_now_s > m_block_last_s) {
+            m_block_lagging = limit_arm_step(chain, limb_swivel_reference(m_defended_frame, block_limb), m_defended_frame.swivel[block_limb],
+                                             m_block_last_wrist, m_block_last_elbow,
+                                             speed_ratio * m_block_choice.clip_arm_speed_mps * (m_now_s - m_block_last_s), clip_wrist, bends[block_side]);
+        }
+        m_defended_frame.extremity[block_limb] = m_defended_frame.part_frames[chain.parent_part].conjugate() * clip_wrist / chain.length();
+        pins.pinned[block_limb] = false;
+        pins.extremity_offset_world[block_limb].setZero();
+        asked = before[chain.root] + clip_wrist;
     }
     if (block > 0.0 || lagging) {
         // The elbow keeps its bend (the guard's, or the captured clip's) carried over to the new shoulder->wrist line,
