@@ -74,6 +74,13 @@ void db_mir_frame_store(DbMirFrame& out, const MirFrame& frame) {
     }
 }
 
+int db_first_clip_of(const MotionDatabaseView& db, std::string_view semantics) {
+    for (std::size_t c = 0; c < db.clips.size(); ++c) {
+        if (db.string(db.clips[c].semantics) == semantics) return static_cast<int>(c);
+    }
+    return -1;
+}
+
 void db_mir_frame_load(MirFrame& out, const DbMirFrame& stored) {
     out.hip_centre = Eigen::Vector3d(stored.hip_centre[0], stored.hip_centre[1], stored.hip_centre[2]);
     for (int part = 0; part < k_body_part_count; ++part) {

@@ -169,6 +169,9 @@ struct MotionDatabaseContent {
 void db_mir_frame_store(DbMirFrame& out, const MirFrame& frame);
 void db_mir_frame_load(MirFrame& out, const DbMirFrame& stored);
 
+// The first clip whose semantics is `semantics` ("rest", "step_forward", ...), or -1.
+int db_first_clip_of(const MotionDatabaseView& db, std::string_view semantics);
+
 // Strike counts by semantics and side, for summaries.
 bool db_clip_is_strike(const DbClip& clip);
 // Whether a strike clip strikes with an arm (clavicle to hand) rather than a leg.

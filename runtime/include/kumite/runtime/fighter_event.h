@@ -1,0 +1,61 @@
+#pragma once
+// What the fighter tells, one event per happening: its state changes, orders (taken, queued, performed, refused,
+// expired), strikes (at the contact and at the end), the tracker lost and back, the character switched, and the
+// user's strikes at it (seen, and how they ended).
+
+#include "kumite/runtime/defence.h"
+#include "kumite/runtime/fighter_settings.h"
+
+#include <Eigen/Core>
+
+#include <optional>
+
+namespace kumite {
+
+enum class FighterState { rest, approach, strike, recover, hold };
+const char* fighter_state_name(FighterState state);
+
+struct FighterEvent {
+    // Every order ends once, as order_performed (its strike began), ignored_order (refused, with why) or
+    // order_expired (it waited order_wait_s, or a later order took its place); it starts as order (taken at once)
+    // or order_queued (waiting).
+    enum class Type { order, ignored_order, state, strike, strike_end, tracker_lost, tracker_back, character, user_strike, user_strike_end,
+                      order_queued, order_performed, order_expired };
+    Type type = Type::state;
+    double t_s = 0.0;
+    FighterState state = FighterState::rest; // state events: the new state
+    int semantics = -1;                      // order and strike events
+    Side side = Side::none;
+    StrikeKind kind = StrikeKind::none;      // order and strike events: what the order asked for (none: any)
+    StrikeHeight height = StrikeHeight::none;
+    bool varied = false;                     // strike events: not the best clip, to vary from the last strikes
+    int clip = -1;                           // strike events
+    bool hit = false;
+    double contact_error_m = 0.0;            // effector to the latched target at contact
+    double head_distance_m = 0.0;            // effector to the head at contact
+    double range_m = 0.0;                    // strike events: pelvis to head on the floor when the strike began
+    double effector_speed_mps = 0.0;         // strike events: the hit point's speed arriving at the contact
+    bool impact = true;                      // strike and strike_end events: the head was still at the target at
+                                             // the contact, so the strike stops there; false: it follows through
+    double overshoot_m = 0.0;                // strike_end events: the farthest past the target after the contact
+    int joint_limit_violations = 0;          // strike_end events: joints out of limits, summed over the frames
+    FighterAim aim = FighterAim::latched;    // strike events: how the target was chosen
+    Eigen::Vector3d target = Eigen::Vector3d::Zero(); // strike events: the target aimed at, world
+    double head_speed_mps = 0.0;             // strike events: the head's filtered speed when the strike began
+    double prediction_error_m = 0.0;         // strike events: the head at the contact to the target aimed at
+    std::optional<Eigen::Vector3d> aimed_point_at_contact; // strike events: where the part aimed at was at the contact
+                                                           // (world; none without a head then)
+    double retrieval_offset_m = 0.0;         // strike events: the chosen clip's natural hit point to the target
+    double steered_m = 0.0;                  // strike events: how far steering moved the target since the start
+    TargetPart target_part = TargetPart::head; // strike events: the part aimed at
+    bool reachable = true;                   // strike events: the adaptation gets the hit point to the target
+    UserStrikeEvent user_strike;             // user_strike (seen, the move chosen) and user_strike_end (outcome; its
+                                             // joint_limit_violations and foot_shift_m: what the defence did)
+    double foot_shift_m = 0.0;
+    int character = -1;                      // character events
+    const char* why = "";                    // ignored and expired orders
+    double waited_s = 0.0;                   // order_performed and order_expired: since the order came
+};
+const char* fighter_event_name(FighterEvent::Type type);
+
+} // namespace kumite

@@ -1,0 +1,73 @@
+#pragma once
+// What the fighter is told: how it aims (latched or predicted, which part of the user), what an order asks for, and
+// its settings (rate, distance band, blends, waits, variety, defence). Values only: the fighter (fighter.h) reads them.
+
+#include "kumite/core/body_map.h"
+#include "kumite/core/strike_labels.h"
+#include "kumite/runtime/defence.h"
+#include "kumite/runtime/head_motion_filter.h"
+
+#include <optional>
+#include <string_view>
+
+namespace kumite {
+
+// Where a strike aims: the head as it was at the order (the paper), or where it will be at the strike's contact,
+// extrapolated from its filtered velocity (a user who keeps walking is hit; one who stops, turns or ducks is not).
+enum class FighterAim { latched, predicted };
+const char* fighter_aim_name(FighterAim aim);
+std::optional<FighterAim> fighter_aim_from_name(std::string_view name);
+
+// The point of the user a strike aims at. The head first; when no strike reaches it (a short fighter, a tall
+// user), the highest of chin, chest and solar plexus one does: points below the head by the user's proportions
+// (0.10, 0.30 and 0.45 m under a 1.65 m head, scaled by the head's height), moving with the head.
+enum class TargetPart { head, chin, chest, solar_plexus };
+const char* target_part_name(TargetPart part);
+
+// What the supervisor asks for: a semantics (Retriever::semantics_id) and, optionally, the side, kind and height
+// (none: any). An order the database cannot serve is refused, not replaced by another strike.
+struct StrikeOrder {
+    int semantics = -1;
+    Side side = Side::none;
+    StrikeKind kind = StrikeKind::none;
+    StrikeHeight height = StrikeHeight::none;
+};
+
+struct FighterSettings {
+    double rate_hz = 60.0;
+    double hit_radius_m = 0.12;      // a strike hits when the effector is this close to the head at contact
+    double tracker_timeout_s = 0.5;
+    double hold_s = 1.0;
+    double near_legs = 0.35;         // the distance band to the user (horizontal, from the pelvis) where strikes
+    double far_legs = 1.05;          // reach, in leg lengths; the far end comes closer when the arms cannot reach
+                                     // the head from there (a short fighter, a tall user): see strike_reach_m()
+    double landing_in_band = 0.7;    // steps are shortened (feet locked) to land this far from near to far
+    double min_step_scale = 0.15;    // the shortest step, as a fraction of the clip's
+    double blend_s = 0.2;
+    double recover_s = 0.3;
+    double start_x_m = 0.0;          // where the fighter starts on the floor: x, facing +Z (side by side)
+    FighterAim aim = FighterAim::latched;
+    HeadMotionSettings head_motion;  // the filter behind predicted aim
+    bool reach_fallback = true;      // aim lower on the body when the head is out of reach (else strike at the head)
+    double reach_tolerance_m = 0.05; // a strike reaches a point when its adaptation gets the hit point this close
+    DefenceSettings defence;         // blocks and slips against the user's tracked hands (defence.h)
+    // With predicted aim, the fighter keeps its eyes on the head during a strike: every frame until this long
+    // before the contact it aims again at where the head will be at the contact (the adaptation carries the hit
+    // point there); the last `steer_until_s` fly on as they are, as a person's punch does once it is too late to
+    // correct it (visual feedback takes ~0.15 s). 0 or less: the target stays as planned (no steering).
+    double steer_until_s = 0.15;
+    // An order that comes while the fighter strikes, recovers, defends or has an order under way waits this long
+    // and is carried out as soon as the fighter can; a later one takes its place (the earlier expires), and one
+    // that waits too long expires. 0: refused at once ("already striking"), as the paper's fighter does.
+    double order_wait_s = 1.5;
+    double wait_for_reach_s = 1.5;   // an order no strike reaches waits this long for the fighter to step in (the
+                                     // target stays latched), then strikes at the head anyway
+    // Variety: when the best strike for an order is one of the last `variety_recent` clips struck, the best other
+    // clip is taken instead if its score is within `variety_margin` of the best (score units: leg lengths of pose
+    // and target distance). 0 recent: always the best.
+    int variety_recent = 6; // with ~40 clips per order, 6 keeps twenty same orders on at least six clips
+    double variety_margin = 0.15;
+};
+inline constexpr int k_max_variety_recent = 8;
+
+} // namespace kumite

@@ -1,0 +1,163 @@
+#include "fighter/fighter_defence.h"
+
+#include "fighter/arm_geometry.h"
+
+#include "kumite/core/joint_limits.h"
+#include "kumite/core/mir_edit.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+
+namespace kumite {
+
+void FighterDefence::reset() {
+    m_defence.reset();
+    m_block_arm.forget_lag(); // the last arm shown was another body's, or held still
+}
+
+void FighterDefence::defend(double t_s, double shown_s, const UserHands& hands, bool tracking, FighterState state, int striking_segment,
+                            const CharacterBody& body, EventLog& log) {
+    const RestAnatomy& anatomy = body.anatomy();
+    const auto positions = body.positions(); // the pose shown last frame (a strike's adapted one included)
+    DefenderBody defender;
+    defender.head = body.part_position(BodyPart::head);
+    defender.chest = body.part_position(BodyPart::chest);
+    for (int arm = 0; arm < 2; ++arm) {
+        const LimbChain& limb = anatomy.limbs[arm == 0 ? int(Limb::arm_l) : int(Limb::arm_r)];
+        defender.elbow[arm] = positions[limb.middle];
+        defender.wrist[arm] = positions[limb.extremity];
+        defender.shoulder[arm] = positions[limb.root];
+        defender.arm_length[arm] = limb.length();
+    }
+    defender.heading = body.heading();
+    // At rest, approaching or recovering any move; while striking, a block with an arm the strike leaves free (the
+    // trunk is the strike's: no slip); nothing without a head to face.
+    Defence::Allowed allowed;
+    if (!tracking) {
+        allowed = Defence::Allowed{{false, false}, false};
+    } else if (state == FighterState::strike) {
+        allowed.slip = false;
+        const int striking_limb = limb_of_segment(static_cast<BodyPart>(std::max(0, striking_segment)));
+        if (striking_limb == int(Limb::arm_l)) allowed.block_arms[0] = false;
+        if (striking_limb == int(Limb::arm_r)) allowed.block_arms[1] = false;
+    } else if (state == FighterState::hold) {
+        allowed = Defence::Allowed{{false, false}, false};
+    }
+    m_block_arm.measure_from_shown(m_defence, defender, shown_s);
+    m_defence.update(t_s, hands, defender, allowed);
+    if (m_defence.block_started()) m_block_arm.start(m_defence, anatomy, defender, body.mir(), body.heading().yaw_rad, t_s);
+    for (const UserStrikeEvent& seen : m_defence.events()) {
+        FighterEvent event;
+        event.type = seen.ended ? FighterEvent::Type::user_strike_end : FighterEvent::Type::user_strike;
+        event.t_s = t_s;
+        event.user_strike = seen;
+        if (seen.ended) { // what the defence did to the body since the last strike ended
+            event.joint_limit_violations = m_violations;
+            event.foot_shift_m = m_foot_shift_m;
+            m_violations = 0;
+            m_foot_shift_m = 0.0;
+        }
+        log.push(event);
+    }
+    m_defence.clear_events();
+}
+
+void FighterDefence::apply(double now_s, bool striking, const LimbPins& pins_shown, CharacterBody& body) {
+    m_shown = false;
+    const double block = m_defence.block_weight(), slip = m_defence.slip_weight();
+    // A captured block's arm held back to its clip's speed may still be on its way to the guard when the move ends:
+    // it goes on there at that speed (not in one frame), unless the fighter strikes or moves again.
+    const bool lagging = m_block_arm.lagging() && m_defence.move() == DefenceMove::none && !striking;
+    m_block_arm.forget_lag();
+    if (block <= 0.0 && slip <= 0.0 && !lagging) return;
+    CharacterBody::Rig& rig = body.current();
+    const RestAnatomy& anatomy = rig.rig->anatomy();
+    // The undefended pose: the shown decode, or a strike's adapted frame (decoded again from its MIR frame, for the
+    // arm's natural wrist below).
+    if (striking) rig.decoder.decode(body.pose(), body.mir());
+    const auto before = striking ? rig.adapter.positions() : rig.decoder.model_positions();
+    // What the edits must not break, measured against the undefended pose: the arms' bends, the trunk, the feet.
+    std::array<Eigen::Vector3d, 2> bends, ankles;
+    for (int side = 0; side < 2; ++side) {
+        const LimbChain& arm = anatomy.limbs[side == 0 ? int(Limb::arm_l) : int(Limb::arm_r)];
+        bends[side] = limb_bend_direction(before[arm.root], before[arm.middle], before[arm.extremity]);
+        ankles[side] = before[anatomy.limbs[side == 0 ? int(Limb::leg_l) : int(Limb::leg_r)].extremity];
+    }
+    m_defended_frame = body.mir();
+    // The feet as the shown pose has them: lock_feet re-encoded the shown frame, so pinned feet stay pinned and a
+    // released foot's fading offset is in the frame already (applying it again would move that foot twice). A
+    // strike's frame holds its adapted limbs and planted feet already.
+    LimbPins& pins = m_pins;
+    pins = striking ? LimbPins{} : pins_shown;
+    for (Eigen::Vector3d& offset : pins.extremity_offset_world) offset.setZero();
+    if (slip > 0.0) {
+        // Lean above the spine's base so the head moves by the slip's offset: a turn about the horizontal axis
+        // across it, by the angle that carries the head that far.
+        const int base = anatomy.body_map.joint(BodyPart::spine) >= 0 ? anatomy.body_map.joint(BodyPart::spine) : anatomy.body_map.joint(BodyPart::pelvis);
+        const double height = std::max(0.2, (before[anatomy.body_map.joint(BodyPart::head)] - before[base]).norm());
+        const Eigen::Vector3d offset = m_defence.slip_offset();
+        const Eigen::Vector3d axis = Eigen::Vector3d::UnitY().cross(offset).normalized();
+        // At most 30 degrees: a short trunk leans that far and no further (the trunk's joint limit, with the guard's
+        // own twist, is 75 degrees).
+        const double angle = slip * std::min(0.5236, std::asin(std::min(1.0, offset.norm() / height)));
+        mir_frame_turn(m_defended_frame, TrunkPivot::spine_base, Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis)), before[base],
+                       anatomy.leg_length, anatomy.ankle_height);
+    }
+    const int block_side = m_defence.block_arm();
+    const int block_limb = block_side == 0 ? int(Limb::arm_l) : int(Limb::arm_r);
+    const LimbChain& block_chain = anatomy.limbs[block_limb];
+    Eigen::Vector3d asked = Eigen::Vector3d::Zero(); // where the blocking wrist is asked to go
+    // A captured block's arm (or one still on its way back to the guard): its wrist (relative to the shoulder, world
+    // axes) and elbow bend asked this frame, then held to the clip's speed.
+    const bool captured_arm = lagging || (block > 0.0 && m_defence.move() == DefenceMove::block_clip);
+    Eigen::Vector3d clip_wrist = Eigen::Vector3d::Zero();
+    if (lagging) {
+        // On to the guard's wrist and bend (this frame's undefended arm).
+        clip_wrist = m_defended_frame.part_frames[block_chain.parent_part] * m_defended_frame.extremity[block_limb] * block_chain.length();
+    } else if (captured_arm) {
+        clip_wrist = m_block_arm.clip_wrist(m_defence, anatomy, before, block, body.heading().yaw_rad, now_s, m_defended_frame, bends[block_side]);
+    } else if (block > 0.0) {
+        // The wrist driven onto the hand's course.
+        const Eigen::Vector3d natural = rig.decoder.limb_targets()[block_limb]; // the undefended decode's wrist
+        pins.pinned[block_limb] = false;
+        pins.extremity_offset_world[block_limb] = block * (m_defence.block_wrist_target() - natural);
+        asked = natural + pins.extremity_offset_world[block_limb];
+    }
+    if (captured_arm) {
+        m_block_arm.limit_speed(m_defence, block_chain, limb_swivel_reference(m_defended_frame, block_limb), m_defended_frame.swivel[block_limb], lagging,
+                                now_s, clip_wrist, bends[block_side]);
+        m_defended_frame.extremity[block_limb] = m_defended_frame.part_frames[block_chain.parent_part].conjugate() * clip_wrist / block_chain.length();
+        pins.pinned[block_limb] = false;
+        pins.extremity_offset_world[block_limb].setZero();
+        asked = before[block_chain.root] + clip_wrist;
+    }
+    if (block > 0.0 || lagging) {
+        // The elbow keeps its bend (the guard's, or the captured clip's) carried over to the new shoulder->wrist line,
+        // as strikes keep their clip's bends, so it cannot flip.
+        m_defended_frame.swivel[block_limb] = swivel_keeping_bend(before[block_chain.root], asked, bends[block_side],
+                                                                  limb_swivel_reference(m_defended_frame, block_limb), m_defended_frame.swivel[block_limb]);
+    }
+    body.decode(m_defended_frame, pins);
+    // What is shown, for a recording (shown_mir()): the body's MIR frame stays the undefended one the next blend starts from.
+    body.encode(m_shown_mir);
+    m_shown = true;
+    const auto after = rig.decoder.model_positions();
+    unsigned violations = trunk_turn(anatomy, rig.decoder.model_rotations()) > JointLimits{}.trunk_turn_rad ? k_trunk_violation : 0u;
+    for (int side = 0; side < 2; ++side) {
+        const int limb = side == 0 ? int(Limb::arm_l) : int(Limb::arm_r);
+        const LimbChain& arm = anatomy.limbs[limb];
+        if (limb_bend_flipped(limb_bend_direction(after[arm.root], after[arm.middle], after[arm.extremity]), bends[side])) violations |= 1u << limb;
+        const Eigen::Vector3d ankle = after[anatomy.limbs[side == 0 ? int(Limb::leg_l) : int(Limb::leg_r)].extremity];
+        m_foot_shift_m = std::max(m_foot_shift_m, (ankle - ankles[side]).norm());
+    }
+    m_violations += joint_violation_count(violations);
+    if (block > 0.0 || lagging) {
+        // The blocking arm's fastest move relative to its shoulder, for the block's event.
+        const Eigen::Vector3d wrist = after[block_chain.extremity] - after[block_chain.root], elbow = after[block_chain.middle] - after[block_chain.root];
+        m_block_arm.note_shown(m_defence, wrist, elbow, now_s);
+    }
+}
+
+} // namespace kumite

@@ -1,0 +1,52 @@
+#pragma once
+// The fighter's defence on its body (fighter.h, defence.h): each frame its body as shown handed to the Defence with
+// the moves its state allows (no slip while a strike drives the trunk, no block with the striking arm, nothing in
+// hold or without a head); the user's strikes told as events; the move's edits (a blocking arm driven onto the
+// hand's course or playing a captured block, a slip's lean) decoded over the pose shown, measured (joint limits,
+// feet). Owns: the Defence, the captured block's arm, the edited frame and what it shows, the edits' measures since
+// the last user strike. Touches: the body (the pose shown), the event log (user_strike, user_strike_end).
+
+#include "fighter/captured_block_arm.h"
+#include "fighter/character_body.h"
+#include "fighter/event_log.h"
+
+#include "kumite/runtime/defence.h"
+
+namespace kumite {
+
+class FighterDefence {
+public:
+    FighterDefence(const MotionDatabaseView& db, const DefenceSettings& settings) : m_defence(settings), m_block_arm(db) {}
+
+    Defence& defence() { return m_defence; }
+    const Defence& defence() const { return m_defence; }
+    bool active() const { return m_defence.active(); } // a move is on (orders wait)
+    void reset();                                      // the tracker lost the user, another character: no move
+
+    // One frame, before the body moves: the user's `hands` against the body shown last frame (at `shown_s`), the
+    // moves `state` allows (`striking_segment`: the strike's body part, while striking), the events of the user's
+    // strikes.
+    void defend(double t_s, double shown_s, const UserHands& hands, bool tracking, FighterState state, int striking_segment, const CharacterBody& body,
+                EventLog& log);
+    // After the body moved (the clip played, with the feet's `pins`, or the strike's adapted frame): the move's
+    // edits decoded over the pose shown, when one is on.
+    void apply(double now_s, bool striking, const LimbPins& pins, CharacterBody& body);
+
+    // The pose shown with the edits, in the MIR (for a recording), and whether this frame's pose carries them.
+    bool shown() const { return m_shown; }
+    const MirFrame& shown_mir() const { return m_shown_mir; }
+    // Frames kept here that may hold any character's MIR frame (for sizing: CharacterBody).
+    std::array<MirFrame*, 2> frames() { return {&m_defended_frame, &m_shown_mir}; }
+
+private:
+    Defence m_defence;
+    CapturedBlockArm m_block_arm;
+    MirFrame m_defended_frame;           // scratch: the shown frame with the defence's edits
+    MirFrame m_shown_mir;                // the pose shown with the defence's edits, encoded again
+    bool m_shown = false;                // this frame's pose carries the defence's edits
+    LimbPins m_pins;                     // the edits' pins (the feet as shown, the blocking arm's offset)
+    int m_violations = 0;                // joint-limit violations of the defence's edits, since the last user strike ended
+    double m_foot_shift_m = 0.0;         // how far they moved a foot, since then
+};
+
+} // namespace kumite

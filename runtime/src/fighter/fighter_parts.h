@@ -1,0 +1,37 @@
+#pragma once
+// The fighter's parts (fighter.h; who calls whom: runtime/README.md). Private to the fighter's sources.
+
+#include "fighter/character_body.h"
+#include "fighter/event_log.h"
+#include "fighter/fighter_defence.h"
+#include "fighter/footwork.h"
+#include "fighter/motion_player.h"
+#include "fighter/order_queue.h"
+#include "fighter/strike.h"
+#include "fighter/strike_planner.h"
+#include "fighter/tracked_user.h"
+
+#include "kumite/runtime/fighter.h"
+
+namespace kumite {
+
+struct Fighter::Parts {
+    Parts(const MotionDatabaseView& database, const Retriever& retriever, const std::vector<CharacterRig*>& characters, const FighterSettings& settings)
+        : db(database), user(settings.head_motion), orders(retriever, settings.order_wait_s), footwork(db, settings), player(db), strike(db, settings),
+          planner(db, retriever, settings), defence(db, settings.defence),
+          body(db, characters, settings.start_x_m, defence.frames(),
+               std::array<MirFrame*, 4>{player.frames()[0], player.frames()[1], player.frames()[2], &strike.start_frame()}) {}
+
+    const MotionDatabaseView db; // the parts' references point here
+    EventLog log;
+    TrackedUser user;
+    OrderQueue orders;
+    Footwork footwork;
+    MotionPlayer player;
+    Strike strike;
+    StrikePlanner planner;
+    FighterDefence defence;
+    CharacterBody body; // last: it sizes the frames the others keep
+};
+
+} // namespace kumite

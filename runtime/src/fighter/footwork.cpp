@@ -1,0 +1,48 @@
+#include "fighter/footwork.h"
+
+#include "fighter/strike_aim.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace kumite {
+
+Footwork::Footwork(const MotionDatabaseView& db, const FighterSettings& settings)
+    : m_db(db), m_near_legs(settings.near_legs), m_far_legs(settings.far_legs), m_landing_in_band(settings.landing_in_band),
+      m_min_step_scale(settings.min_step_scale), m_reach_fallback(settings.reach_fallback) {
+    m_guard_clip = db_first_clip_of(db, "rest");
+    if (m_guard_clip < 0) m_guard_clip = 0; // a database without a guard: its first clip stands in
+    const char* steps[] = {"step_forward", "step_back", "step_left", "step_right"};
+    for (int i = 0; i < 4; ++i) m_step_clips[i] = db_first_clip_of(db, steps[i]);
+}
+
+double Footwork::stride_m(int clip, double leg_length) const {
+    if (clip < 0) return 0.0;
+    const DbClip& c = m_db.clips[clip];
+    const DbMirFrame& first = m_db.mir_frames[c.first_pose];
+    const DbMirFrame& last = m_db.mir_frames[c.first_pose + c.frame_count - 1];
+    const double dx = last.hip_centre[0] - first.hip_centre[0], dz = last.hip_centre[2] - first.hip_centre[2];
+    return std::hypot(dx, dz) * leg_length;
+}
+
+double Footwork::far_m(const CharacterBody& body, const TrackedUser& user) const {
+    const double leg = body.leg_length(), near = near_m(leg);
+    return user.tracking() ? std::clamp(strike_reach_m(body, user.head(), m_reach_fallback), near + 0.25 * leg, m_far_legs * leg) : m_far_legs * leg;
+}
+
+Footwork::Next Footwork::next_clip(bool resting_with_user, double distance, double near, double far, double leg_length) const {
+    Next next{m_guard_clip, 1.0, false};
+    if (!resting_with_user) return next;
+    // Land in the far part of the band: in reach, without crowding the user's face.
+    const double middle = near + m_landing_in_band * (far - near);
+    if (distance > far && m_step_clips[0] >= 0) next.clip = m_step_clips[0];
+    else if (distance < near && m_step_clips[1] >= 0) next.clip = m_step_clips[1];
+    if (next.clip != m_guard_clip) {
+        const double stride = stride_m(next.clip, leg_length);
+        if (stride > 1e-3) next.step_scale = std::clamp(std::abs(distance - middle) / stride, m_min_step_scale, 1.0);
+        next.is_step = true;
+    }
+    return next;
+}
+
+} // namespace kumite

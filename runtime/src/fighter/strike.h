@@ -1,0 +1,71 @@
+#pragma once
+// The strike being played (fighter.h): planned on a retrieved clip and a target, adapted every frame (the hit point
+// carried to the target, steered onto a moving head with predicted aim), its contact judged (a head still at the
+// target takes the impact, a dodge is followed through), measured (overshoot, joint-limit violations, speed at the
+// contact). Owns: the plan, the MIR frame it began from, its timing, what it was for, its measures. Touches: the
+// body (the adapter's pose is shown) and the event log (strike, strike_end). Reads: the user (the head at the
+// contact, its course for steering).
+
+#include "fighter/character_body.h"
+#include "fighter/event_log.h"
+#include "fighter/tracked_user.h"
+
+#include "kumite/core/retrieval.h"
+
+namespace kumite {
+
+class Strike {
+public:
+    Strike(const MotionDatabaseView& db, const FighterSettings& settings);
+
+    // The adaptation of `found` at `target`, begun from `from` on the body (the feet where its pose has them): how
+    // far from the target the hit point stops. Planning tries several (target parts); the last one tried is played.
+    double try_plan(const RetrievalResult& found, const Eigen::Vector3d& target, const MirFrame& from, CharacterBody& body);
+    // What the strike planned last is for, as its events tell.
+    struct Purpose {
+        StrikeOrder order;
+        bool varied = false;         // not the best clip, for variety
+        TargetPart part = TargetPart::head;
+        double drop_m = 0.0;         // the aimed point under the head
+        bool reachable = true;
+        FighterAim aim = FighterAim::latched;
+        double head_speed_mps = 0.0; // when it began
+        double retrieval_offset_m = 0.0;
+        double range_m = 0.0;        // pelvis to head on the floor when it began
+    };
+    void start(double t_s, const Purpose& purpose);
+    // The strike carried on on another character (set_character): begun again there from the frame it began from.
+    void carry_over(CharacterBody& body);
+
+    // One frame: the adapted pose onto the body (its MIR frame encoded again), the contact judged and told.
+    void play(double t_s, CharacterBody& body, const TrackedUser& user, EventLog& log);
+    bool over() const { return m_over; } // the last frame was played: strike_end() and recover
+    void end(double t_s, EventLog& log);
+
+    const StrikePlan& plan() const { return m_plan; }
+    int segment() const; // the body part that strikes (the clip's)
+    MirFrame& start_frame() { return m_start_frame; } // (for sizing: CharacterBody)
+
+private:
+    void begin(CharacterBody& body); // the body's adapter on m_plan, from m_start_frame
+    void steer(double to_contact_s, CharacterBody& body, const TrackedUser& user);
+    Eigen::Vector3d aimed_point(const TrackedUser& user) const { return user.head() - Eigen::Vector3d(0.0, m_purpose.drop_m, 0.0); }
+    FighterEvent event(FighterEvent::Type type, double t_s) const;
+
+    const MotionDatabaseView& m_db;
+    double m_hit_radius_m, m_steer_until_s;
+    StrikePlan m_plan;
+    Purpose m_purpose;
+    MirFrame m_start_frame;
+    double m_start_s = 0.0;
+    bool m_contact_done = false;
+    bool m_over = false;
+    bool m_impact = true;
+    double m_overshoot_m = 0.0;
+    int m_violations = 0;
+    Eigen::Vector3d m_planned_target = Eigen::Vector3d::Zero(); // when it began (before steering)
+    Eigen::Vector3d m_previous_effector = Eigen::Vector3d::Zero();
+    double m_previous_effector_s = 0.0;
+};
+
+} // namespace kumite
