@@ -57,6 +57,7 @@ Result<std::unique_ptr<Bout>> Bout::create(const MotionDatabaseView& database, s
     for (auto& fighter : bout->m_fighters) bout->m_fighter_pointers.push_back(fighter.get());
     bout->m_planning = std::make_unique<PlanningBudget>(options.plans_per_frame, bout->m_fighters.size());
     bout->m_queued.reserve(16);
+    bout->m_motion = std::make_unique<MotionMeter>(options.fighters);
     if (options.record) {
         const Character& start = *bout->m_characters[options.start_character];
         bout->m_record_decoder = std::make_unique<MirDecoder>(start.file.clip.skeleton, start.anatomy, std::span<const std::string>{});
@@ -72,6 +73,10 @@ const std::string& Bout::character_name(int fighter_character) const {
 
 const Skeleton& Bout::character_skeleton(int fighter_character) const {
     return m_characters[(m_options.start_character + fighter_character) % m_characters.size()]->file.clip.skeleton;
+}
+
+const RestAnatomy& Bout::character_anatomy(int fighter_character) const {
+    return m_characters[(m_options.start_character + fighter_character) % m_characters.size()]->anatomy;
 }
 
 const std::shared_ptr<const SkinnedMesh>& Bout::character_body(int fighter_character) const {
@@ -190,6 +195,13 @@ void Bout::step(double t_s) {
                 m_counters.last_contact_error_m = event.contact_error_m;
                 m_counters.last_hit = event.hit;
                 m_counters.contact_speed_mps.add(event.effector_speed_mps);
+                if (event.clip >= 0 && event.clip < static_cast<int>(m_db.clips.size())) {
+                    const int segment = m_db.clips[event.clip].segment;
+                    if (segment >= 0 && segment < k_body_part_count) {
+                        const int kind = int(strike_move_kind(static_cast<BodyPart>(segment))) - int(MoveKind::punch);
+                        m_counters.contact_speed_by_kind_mps[std::size_t(kind)].add(event.effector_speed_mps);
+                    }
+                }
                 if (event.clip >= 0 && event.clip < static_cast<int>(m_counters.by_clip.size())) {
                     m_counters.by_clip[event.clip][0] += 1;
                     m_counters.by_clip[event.clip][1] += event.hit;
@@ -233,6 +245,7 @@ void Bout::step(double t_s) {
             if (m_events.size() < m_events.capacity()) m_events.push_back({int(f), event});
         }
         fighter.clear_events();
+        m_motion->measure(int(f), t_s, fighter, m_db, character_anatomy(fighter.character()), m_have_head ? &m_head : nullptr);
     }
     if (m_record_decoder) {
         m_record_decoder->decode(m_record_pose, m_fighters[0]->mir());

@@ -10,6 +10,7 @@
 #include "kumite/runtime/value_histogram.h"
 #include "kumite/runtime/fighter.h"
 #include "kumite/runtime/head_tracker.h"
+#include "kumite/runtime/motion_meter.h"
 #include "kumite/runtime/planning_budget.h"
 #include "kumite/runtime/supervisor.h"
 
@@ -54,6 +55,9 @@ struct BoutCounters {
     ValueHistogram command_to_strike_frames{0.5, 1e6};
     ValueHistogram impact_overshoot_m{1e-5, 10.0}; // per strike that stopped at the target (impact): how far past it
     ValueHistogram contact_speed_mps{1e-3, 1e3};   // per strike: the hit point's speed arriving at the contact
+    // ... by kind of strike: punch, kick, knee, elbow (MoveKind::punch + i)
+    std::array<ValueHistogram, 4> contact_speed_by_kind_mps{ValueHistogram{1e-3, 1e3}, ValueHistogram{1e-3, 1e3}, ValueHistogram{1e-3, 1e3},
+                                                            ValueHistogram{1e-3, 1e3}};
     long long joint_limit_violations = 0;       // summed over strikes and frames
     long long impacts = 0, follow_throughs = 0; // strikes that stopped at the target, strikes the user dodged
     ValueHistogram prediction_error_m{1e-4, 100.0}; // per strike: the head at the contact to the target aimed at
@@ -97,6 +101,8 @@ public:
 
     std::span<const BoutEvent> events() const { return m_events; }
     const BoutCounters& counters() const { return m_counters; }
+    // The fighters' joint speeds by kind of move and the distance they keep (motion_meter.h).
+    const MotionMeter& motion() const { return *m_motion; }
     bool quit_requested() const { return m_quit; }
     double now_s() const { return m_now_s; } // the time of the last step
     double rate_hz() const { return m_options.rate_hz; }
@@ -111,6 +117,7 @@ public:
     // Fighters index characters from the starting one on; this names and shapes them in that order.
     const std::string& character_name(int fighter_character) const;
     const Skeleton& character_skeleton(int fighter_character) const;
+    const RestAnatomy& character_anatomy(int fighter_character) const;
     // Its body (prepared once when the bout is created; shared by every fighter on it), or null.
     const std::shared_ptr<const SkinnedMesh>& character_body(int fighter_character) const;
     int character_count() const { return static_cast<int>(m_characters.size()); }
@@ -143,6 +150,7 @@ private:
     std::vector<BoutEvent> m_events;
     std::vector<long long> m_order_frame;
     BoutCounters m_counters;
+    std::unique_ptr<MotionMeter> m_motion;
     bool m_quit = false;
     bool m_have_head = false;
     Eigen::Vector3d m_head = Eigen::Vector3d::Zero();

@@ -1,0 +1,49 @@
+#pragma once
+// How fast a body moves, by kind of move (issue 44, "human speed, everywhere"): the fastest wrist and ankle (m/s,
+// world) and the fastest elbow and knee (rad/s: how fast the joint bends or straightens, the angle between upper
+// arm and forearm, thigh and shin; the forearm's twist is not counted: the decoder's twist follows the hand's
+// frame and is no joint speed a person could be measured at). The fighter's are measured every frame (motion_meter.h); the library's are those of the
+// database's clips played on a character, the bar a fighter must stay under.
+
+#include "kumite/core/motion_database.h"
+#include "kumite/core/rest_anatomy.h"
+#include "kumite/core/skeleton.h"
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <span>
+
+namespace kumite {
+
+// The kinds of move, as a frame of the fighter is classified (its state, its strike's segment, its defence) and
+// as a database clip is (its semantics and segment).
+enum class MoveKind { guard, step, punch, kick, knee, elbow, block, slip, recover, hold };
+inline constexpr int k_move_kind_count = 10;
+const char* move_kind_name(MoveKind kind);
+// The kind of strike a segment strikes with (hand: punch, foot: kick, knee, elbow).
+MoveKind strike_move_kind(BodyPart segment);
+
+struct JointSpeeds {
+    double wrist_mps = 0.0, ankle_mps = 0.0, elbow_radps = 0.0, knee_radps = 0.0;
+    void keep_fastest(const JointSpeeds& other);
+};
+
+// One pose's joints that speeds are measured on: both wrists and ankles (world), both elbows' and knees' turns.
+struct LimbSample {
+    std::array<Eigen::Vector3d, 4> extremity;   // wrist l, wrist r, ankle l, ankle r
+    std::array<double, 4> flexion_rad;          // elbow l, elbow r, knee l, knee r: 0 straight
+    static LimbSample of(const RestAnatomy& anatomy, std::span<const Eigen::Vector3d> positions);
+};
+// The speeds from `before` to `after`, `dt_s` apart.
+JointSpeeds joint_speeds(const LimbSample& before, const LimbSample& after, double dt_s);
+
+// The library's fastest per kind of move, on a character: every clip of the database played on it at the
+// database's rate; a clip's speed is its second-fastest frame's (a capture's one-frame glitch is not a person's
+// speed), a kind's the fastest of its clips. Kinds without clips stay 0. Decodes every pose once (~0.2 s).
+std::array<JointSpeeds, k_move_kind_count> library_joint_speeds(const MotionDatabaseView& db, const Skeleton& skeleton, const RestAnatomy& anatomy);
+// A clip's kind, or none (a clip of another kind: a hit reaction, a duck, a walk).
+bool clip_move_kind(const MotionDatabaseView& db, int clip, MoveKind& kind);
+
+} // namespace kumite
