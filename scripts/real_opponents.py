@@ -16,6 +16,7 @@ import concurrent.futures
 import glob
 import json
 import os
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -43,12 +44,21 @@ def bout(args, work, opponent, seconds, character):
     command = [args.kumite, "play"] + ([args.db] if args.db else []) + [
         "--headless", "--duration", f"{seconds:.3f}", "--tracker", f"capture:{opponent}:{args.distance}", "--character", character,
         "--commands", f"script:{script}", "--aim", args.aim, "--seed", "1", "--report", report] + args.play_args.split()
-    if args.events:
-        command += ["--events", os.path.join(args.events, name + ".jsonl")]
+    events = os.path.join(args.events or work, name + ".jsonl")
+    command += ["--events", events]
     done = subprocess.run(command, capture_output=True, text=True)
     if done.returncode != 0:
         sys.exit(f"real_opponents: {' '.join(command)} failed: {done.stderr.strip()}")
-    return json.load(open(report))
+    # The speed at contact of every strike, by what was ordered (punch, kick, ...), pooled over the bouts.
+    contact = {}
+    with open(events) as f:
+        for line in f:
+            event = json.loads(line)
+            if event.get("type") == "strike":
+                contact.setdefault(event.get("command", "?"), []).append(event.get("effector_speed_at_contact_mps", 0.0))
+    result = json.load(open(report))
+    result["contact_speeds"] = contact
+    return result
 
 
 def main():
@@ -89,7 +99,10 @@ def main():
                          "blocks": user["blocks"], "block_clips": user.get("block_clips", 0),
                          "landed": user["hit_by_user"], "user_missed": user["missed"],
                          "joint_limit_violations": report["joint_limit_violations"] + user["joint_limit_violations"],
-                         "defence_foot_shift_m": user["foot_shift_m"]})
+                         "defence_foot_shift_m": user["foot_shift_m"],
+                         "contact_speeds": report["contact_speeds"],
+                         "overshoot_max_m": report.get("overshoot_m", {}).get("max", 0.0),
+                         "motion": report.get("motion", {})})
 
     def rate(a, b):
         return a / b if b else None
@@ -128,6 +141,30 @@ def main():
     print(f"overall: hits {fmt(overall['hits'], overall['strikes'])}, defended {fmt(overall['defended'], overall['would_land'])}, "
           f"captured blocks {fmt(overall['block_clips'], overall['blocks'])}; "
           f"worst hits {worst_hits[0]}, worst defence {worst_defence[0]}", file=sys.stderr)
+    # Motion (issue 44): speed at contact by kind, the fastest joints by move against the library's, the distance kept.
+    contact = {}
+    for row in rows:
+        for kind, speeds in row["contact_speeds"].items():
+            contact.setdefault(kind, []).extend(speeds)
+    overall["speed_at_contact_mps"] = {kind: {"median": statistics.median(v), "count": len(v)} for kind, v in sorted(contact.items())}
+    fastest = {}
+    for row in rows:
+        for move, entry in row["motion"].get("by_move", {}).items():
+            best = fastest.setdefault(move, {"wrist_mps": 0.0, "ankle_mps": 0.0, "elbow_radps": 0.0, "knee_radps": 0.0, "over_library": 0})
+            for joint in ("wrist_mps", "ankle_mps", "elbow_radps", "knee_radps"):
+                best[joint] = max(best[joint], entry.get(joint, 0.0))
+            best["over_library"] += any(ratio > 1.0 for ratio in entry.get("over_library", {}).values())
+    overall["fastest_by_move"] = fastest
+    medians = [row["motion"]["distance_between_strikes"]["median_legs"] for row in rows if row["motion"].get("distance_between_strikes", {}).get("frames")]
+    overall["distance_between_strikes_legs"] = {"median_of_bouts": statistics.median(medians) if medians else None, "bouts": len(medians)}
+    overall["overshoot_max_m"] = max((row["overshoot_max_m"] for row in rows), default=0.0)
+    speeds = ", ".join(f"{kind} {v['median']:.1f} m/s ({v['count']})" for kind, v in overall["speed_at_contact_mps"].items())
+    print(f"speed at contact (median): {speeds}; distance between strikes (median of bouts) "
+          f"{overall['distance_between_strikes_legs']['median_of_bouts'] or 0:.2f} legs; overshoot max {overall['overshoot_max_m'] * 100:.1f} cm",
+          file=sys.stderr)
+    for move, best in sorted(fastest.items()):
+        print(f"  {move:8s} fastest wrist {best['wrist_mps']:5.1f} m/s ankle {best['ankle_mps']:5.1f} m/s elbow {best['elbow_radps']:5.1f} rad/s "
+              f"knee {best['knee_radps']:5.1f} rad/s; over the library's in {best['over_library']} bouts", file=sys.stderr)
     print(json.dumps({"aim": args.aim, "distance_m": args.distance, "order_every_s": 2.0, "overall": overall,
                       "per_opponent": per_opponent, "bouts": rows}, indent=2))
 

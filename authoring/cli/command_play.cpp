@@ -4,6 +4,7 @@
 
 #include "capture_loading.h"
 #include "partial_file.h"
+#include "play_motion.h"
 #include "play_output.h"
 #include "session_html.h"
 #include "session_log.h"
@@ -255,7 +256,10 @@ int run_play(int argc, char** argv) {
         }
     }
 
-    write_event(bout_end_json(bout));
+    const nlohmann::json motion = play_motion_json(bout);
+    nlohmann::json end = bout_end_json(bout);
+    end["motion"] = motion;
+    write_event(end);
     for (PartialFile* file : {&events_out, &user_out}) {
         if (Result<void> finished = file->finish(); !finished) return input_error(finished.error().message);
     }
@@ -268,6 +272,7 @@ int run_play(int argc, char** argv) {
     }
     nlohmann::json report = play_report_json(bout);
     if (const std::optional<nlohmann::json> source = tracker_source_json(bout)) report["tracker_source"] = *source;
+    report["motion"] = motion;
     report["realtime"] = realtime;
     report["viewer"] = viewer;
     if (viewer) report["viewer_drawing"] = {{"renderer", viewer_outcome.renderer}, {"body_meshes_uploaded", viewer_outcome.body_mesh_uploads}};

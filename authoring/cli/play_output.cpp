@@ -21,6 +21,16 @@ nlohmann::json quantiles_of(const ValueHistogram& values) {
     return {{"median", values.quantile(0.5)}, {"p95", values.quantile(0.95)}, {"max", values.max()}, {"count", values.count()}};
 }
 
+// Per kind of strike that was struck: punch, kick, knee, elbow.
+nlohmann::json contact_speed_by_kind(const BoutCounters& counters) {
+    nlohmann::json by_kind = nlohmann::json::object();
+    for (int k = 0; k < 4; ++k) {
+        const ValueHistogram& speeds = counters.contact_speed_by_kind_mps[std::size_t(k)];
+        if (!speeds.empty()) by_kind[move_kind_name(MoveKind(int(MoveKind::punch) + k))] = quantiles_of(speeds);
+    }
+    return by_kind;
+}
+
 const char* side_text(Side side) { return side == Side::left ? "left" : side == Side::right ? "right" : "any"; }
 
 nlohmann::json xyz(const Eigen::Vector3d& point) { return {point.x(), point.y(), point.z()}; }
@@ -109,6 +119,7 @@ nlohmann::json play_report_json(const Bout& bout) {
             {"follow_throughs", counters.follow_throughs},
             {"overshoot_m", quantiles_of(counters.impact_overshoot_m)},
             {"effector_speed_at_contact_mps", quantiles_of(counters.contact_speed_mps)},
+            {"effector_speed_at_contact_by_kind_mps", contact_speed_by_kind(counters)},
             {"joint_limit_violations", counters.joint_limit_violations},
             {"aim", fighter_aim_name(bout.fighter(0).aim())},
             {"by_kind", by_kind},

@@ -3,6 +3,7 @@
 #include "session_html.h"
 
 #include "session_figures.h"
+#include "session_motion.h"
 #include "svg_plot.h"
 
 #include <algorithm>
@@ -21,7 +22,7 @@ h3 { font-size: 14px; margin: 14px 0 6px; } p { margin: 4px 0; }
 .stopped { background: #fff3cd; border: 1px solid #E69F00; padding: 6px 10px; font-size: 14px; }
 table { border-collapse: collapse; font-size: 13px; margin: 4px 16px 8px 0; }
 td, th { border-bottom: 1px solid #e3e3e3; padding: 2px 10px 2px 0; text-align: left; vertical-align: top; }
-td.n, th.n { text-align: right; }
+td.n, th.n { text-align: right; } td.over { color: #b00; font-weight: bold; }
 .tables { display: flex; flex-wrap: wrap; align-items: flex-start; }
 .figures { display: flex; flex-wrap: wrap; align-items: flex-start; gap: 8px; }
 .histograms { display: grid; grid-template-columns: 280px 280px; gap: 4px 16px; }
@@ -250,6 +251,7 @@ std::string session_html(const SessionLog& log, const nlohmann::json* play_repor
             count_row("the user's strikes", total.user_strikes, "n-user-strikes") + count_row("blocked", total.blocked, "n-blocked", total.user_strikes) +
             count_row("slipped", total.slipped, "n-slipped", total.user_strikes) + count_row("landed", total.landed, "n-landed", total.user_strikes) +
             count_row("missed", total.missed, "n-missed", total.user_strikes) + "</table></div>";
+    html += motion_html(end);
 
     const RoomView view = room_view(log);
     const std::string head_path = head_path_svg(log, view);

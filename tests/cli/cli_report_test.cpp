@@ -69,9 +69,29 @@ TEST_CASE("cli: report and play --html draw the bout's events, counts equal to t
     CHECK(speeds["block_clip"]["count"].get<long long>() == arm_speeds["block_clip"]);
     CHECK(report["user_strikes"]["block_clip_speed_ratio"]["count"].get<long long>() == arm_speeds["block_clip"]);
 
+    // The motion (issue 44): frames by move kind summing to the bout's, the strikes' speeds at contact by kind
+    // equal to the events', the same object in the report and the bout_end line, drawn on both pages.
+    const nlohmann::json& motion = report["motion"];
+    long long motion_frames = 0;
+    for (const auto& [move, entry] : motion["by_move"].items()) motion_frames += entry["frames"].get<long long>();
+    CHECK(motion_frames == report["frames"].get<long long>());
+    CHECK(motion["by_move"]["punch"]["library"]["wrist_mps"].get<double>() > 3.0);
+    long long contact_count = 0;
+    for (const auto& [kind, entry] : motion["speed_at_contact_by_kind_mps"].items()) contact_count += entry["count"].get<long long>();
+    CHECK(contact_count == types["strike"]);
+    CHECK(motion["distance_between_strikes"]["frames"].get<long long>() > 0);
+    {
+        std::istringstream all(read_text(folder / "bout.jsonl"));
+        std::string line, last;
+        while (std::getline(all, line)) last = line;
+        CHECK(nlohmann::json::parse(last)["motion"] == motion);
+    }
+
     for (const char* page : {"play.html", "report.html"}) {
         INFO(page);
         const std::string html = read_text(folder / page);
+        CHECK(html.find("<table class=\"motion\">") != std::string::npos);
+        CHECK(html.find("<tr class=\"move-punch\">") != std::string::npos);
         CHECK(summary_count(html, "n-strikes") == types["strike"]);
         // The bout's blocks as its bout_start says: synthesized here (no --captured-blocks).
         CHECK(html.find("<th>blocks</th><td class=\"n blocks\">synthesized</td>") != std::string::npos);
