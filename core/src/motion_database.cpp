@@ -81,6 +81,26 @@ int db_first_clip_of(const MotionDatabaseView& db, std::string_view semantics) {
     return -1;
 }
 
+int db_clip_contact_frame(const MotionDatabaseView& db, const DbClip& clip, double extension) {
+    if (!db_clip_is_strike(clip) || clip.hit_frame < 0) return -1;
+    if (extension >= 1.0) return clip.hit_frame;
+    auto hit_point = [&](int frame) {
+        const float* p = db.poses[clip.first_pose + frame].hit_point;
+        return Eigen::Vector3d(p[0], p[1], p[2]);
+    };
+    const Eigen::Vector3d at_hit = hit_point(clip.hit_frame);
+    int farthest_frame = 0;
+    double farthest = 0.0;
+    for (int f = 0; f <= clip.hit_frame; ++f) {
+        const double distance = (hit_point(f) - at_hit).norm();
+        if (distance > farthest) farthest = distance, farthest_frame = f;
+    }
+    for (int f = farthest_frame; f <= clip.hit_frame; ++f) {
+        if ((hit_point(f) - at_hit).norm() <= (1.0 - extension) * farthest) return f;
+    }
+    return clip.hit_frame;
+}
+
 void db_mir_frame_load(MirFrame& out, const DbMirFrame& stored) {
     out.hip_centre = Eigen::Vector3d(stored.hip_centre[0], stored.hip_centre[1], stored.hip_centre[2]);
     for (int part = 0; part < k_body_part_count; ++part) {

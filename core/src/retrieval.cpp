@@ -46,9 +46,10 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
         info.height = static_cast<StrikeHeight>(clip.height % k_strike_height_count);
         info.arm_strike = db_clip_is_arm_strike(clip);
         info.first_start = info.end_start = static_cast<int>(clip.first_pose);
-        // Starts lead the hit by min_lead_frames; a strike whose whole wind-up is shorter (a snap elbow from
+        // Starts lead the contact by min_lead_frames; a strike whose whole wind-up is shorter (a snap elbow from
         // guard) starts at its first frame, never mid-flight.
-        if (db_clip_is_strike(clip)) info.end_start += std::max(1, clip.hit_frame - m_settings.min_lead_frames + 1);
+        info.contact_frame = db_clip_contact_frame(m_db, clip, m_settings.contact_extension);
+        if (db_clip_is_strike(clip)) info.end_start += std::max(1, info.contact_frame - m_settings.min_lead_frames + 1);
         const DbActor& actor = m_db.actors[clip.actor];
         info.actor_leg_length = actor.leg_length_m;
         const bool by_arm = m_settings.scaling == RetrievalScaling::limb_length && info.arm_strike;
@@ -89,7 +90,7 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
             if (int(pose) < clip.first_start || int(pose) >= clip.end_start) continue;
             const int key = order_key(clip.semantics, clip.side, clip.arm_strike, clip.kind, clip.height);
             const DbPose& start = m_db.poses[pose];
-            const DbPose& hit = m_db.poses[m_db.clips[start.clip].first_pose + m_db.clips[start.clip].hit_frame];
+            const DbPose& hit = m_db.poses[m_db.clips[start.clip].first_pose + clip.contact_frame];
             const Eigen::Vector3d hit_in_start =
                 to_start_heading(start, m_poses[pose].heading_cos, m_poses[pose].heading_sin, hit.hit_point) / clip.actor_scale_length;
             Candidate candidate{};
@@ -216,7 +217,7 @@ bool Retriever::score_start(int pose_index, const RetrievalQuery& query, double 
     const double scale = scale_to_character(clip, query.character);
     const Eigen::Vector3d target_in_start = query.heading.to_heading(query.target_world) / scale; // the paper's c_r
     const PoseInfo& info = m_poses[pose_index];
-    const DbPose& hit = m_db.poses[record.first_pose + record.hit_frame];
+    const DbPose& hit = m_db.poses[record.first_pose + clip.contact_frame];
     const double d_target_m = (to_start_heading(start, info.heading_cos, info.heading_sin, hit.hit_point) - target_in_start).norm() * scale;
     const double score = m_settings.pose_weight * d_pose + m_settings.target_weight * d_target_m / query.character.leg_length_m;
     if (!(score < best.score)) return false;
@@ -224,7 +225,7 @@ bool Retriever::score_start(int pose_index, const RetrievalQuery& query, double 
     best.clip = static_cast<int>(start.clip);
     best.start_pose = pose_index;
     best.start_frame = static_cast<int>(start.frame);
-    best.contact_frame = record.hit_frame;
+    best.contact_frame = clip.contact_frame;
     best.d_pose = d_pose;
     best.d_target_m = d_target_m;
     best.score = score;

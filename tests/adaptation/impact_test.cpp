@@ -1,5 +1,5 @@
-// Strikes that land like strikes (issue 13), on the reference database for all five characters: the contact is
-// the clip's annotated hit, the fist or foot does not travel on through the target after it, a dodged strike
+// Strikes that land like strikes (issues 13, 44), on the reference database for all five characters: the contact is
+// where the limb still travels fast (90% of its way to the annotated hit), the fist or foot does not travel on through the target after it, a dodged strike
 // follows through, and no elbow or knee bends the wrong way, in reach or far out of it.
 
 #include "support/reference_database.h"
@@ -42,7 +42,9 @@ StrikeRun run_strike(const MotionDatabaseView& db, const Retriever& retriever, c
                   character.ankles);
     adapter.set_impact(impact);
     run.contact = adapter.contact_index();
-    CHECK(found.contact_frame == int(db.clips[found.clip].hit_frame)); // the contact is the annotated hit
+    // The contact: where the hit point has covered 90% of its way to the annotated hit, still travelling (issue 44).
+    CHECK(found.contact_frame == db_clip_contact_frame(db, db.clips[found.clip], 0.9));
+    CHECK(found.contact_frame <= int(db.clips[found.clip].hit_frame));
     std::vector<Eigen::Vector3d> path;
     Eigen::Vector3d root_at_contact = Eigen::Vector3d::Zero();
     Pose pose;
@@ -233,10 +235,10 @@ TEST_CASE("impact: near targets get a shorter strike, not a full one pulled back
         }
         INFO((bandai_only ? "Bandai's punches" : "every punch") << ": arriving towards the body: progress " << towards_body[0] << ", time "
                                                                 << towards_body[1] << " of " << strikes << ": " << looped);
-        if (bandai_only) {
-            CHECK(towards_body[1] > 0);              // the time ramp shows the loop on these targets
-            CHECK(towards_body[0] < towards_body[1]); // the progress ramp less often
-        }
+        // The progress ramp never loops more often than the time ramp. (With the contact at the annotated hit, the
+        // time ramp looped on 8-12 of Bandai's 90; with the contact where the fist still travels, issue 44, both
+        // rarely do.)
+        if (bandai_only) CHECK(towards_body[0] <= towards_body[1]);
         CHECK(towards_body[0] <= strikes / 10);
     }
 }

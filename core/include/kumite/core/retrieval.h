@@ -9,11 +9,13 @@
 //     d = w_pose * d_pose + w_target * d_target / leg_length_character
 // where d_pose is Kovar's distance between the current pose's feature and the candidate's, as an RMS over the
 // feature's points (leg lengths), and d_target the distance in metres between the target and the hit segment's
-// point at the clip's annotated hit frame, brought onto the character: expressed in the start's heading frame and
+// point at the clip's contact frame, brought onto the character: expressed in the start's heading frame and
 // scaled by size_character / size_actor (the paper's c_r = c * size_actor / size_character, applied to the point
-// instead of the target so that distances are the character's). The contact frame is the hit frame: the strike
-// arrives in its natural hit posture (the paper's d(t_c) = X - M(t_c) at the annotated t_c), with the clip's own
-// timing from the start to the hit.
+// instead of the target so that distances are the character's). The paper's contact is the annotated hit, at full
+// extension where the limb has stopped: a strike adapted there touches its target. Here the contact is a little
+// earlier, where the hit point has covered `contact_extension` (0.9) of its way to the hit and still travels fast
+// (issue 44): the strike arrives at speed and the impact stops it (the paper's d(t_c) = X - M(t_c) at that t_c),
+// with the clip's own timing from the start to it.
 //
 // Search. Candidates are grouped by cluster and order, and each group is a k-d tree (box_tree.h) over two cheap
 // lower bounds of a candidate's score: its pose key (pose_embedding.h: Euclidean distances between keys never exceed
@@ -52,7 +54,10 @@ enum class RetrievalScaling {
 struct RetrievalSettings {
     double pose_weight = 1.0;
     double target_weight = 1.0;
-    int min_lead_frames = 3; // a start at least this many frames before the hit, which is the contact (0.1 s at 30 fps)
+    int min_lead_frames = 3; // a start at least this many frames before the contact (0.1 s at 30 fps)
+    // The contact: the first frame where the hit point has covered this share of its way to the annotated hit
+    // (db_clip_contact_frame), where the limb still travels fast; 1: the annotated hit (full extension, stopped).
+    double contact_extension = 0.9;
     // One tree per order (semantics, side, limb) over every cluster's candidates, or one per cluster and order
     // with the triangle inequality through the centroid as one more bound. One tree per order won at 220,000 poses
     // (fewer nodes visited: the upper levels are shared; tests/bench/retrieval_bench.cpp reports both).
@@ -103,7 +108,7 @@ struct RetrievalResult {
     bool found = false;
     int clip = -1;
     int start_frame = 0;
-    int contact_frame = 0;     // the clip's annotated hit frame
+    int contact_frame = 0;     // the clip's contact frame (RetrievalSettings::contact_extension)
     double time_to_contact_s = 0.0;
     double d_pose = 0.0;       // RMS over the feature's points, leg lengths
     double d_target_m = 0.0;   // character metres
@@ -154,6 +159,7 @@ private:
         StrikeKind kind = StrikeKind::none;
         StrikeHeight height = StrikeHeight::none;
         bool arm_strike = false;
+        int contact_frame = -1; // clip frame of the contact (strikes)
         int first_start = 0; // pose indices of its candidate starts: [first_start, end_start)
         int end_start = 0;
         double actor_leg_length = 1.0;
