@@ -62,6 +62,8 @@ const CommandSpec& play_spec() {
          {"realtime", "", "step on the wall clock"},
          {"seed", "N", "seed of the simulated user (default 1)"},
          {"lead", "S", "the least time from an order's strike start to its contact (default 0.4 s)"},
+         {"contact-extension", "SHARE", "strikes make contact where the hit point has covered SHARE of its way to the annotated hit, still\n"
+                                        "travelling (default 0.9; 1: at the annotated hit, full extension, the paper's contact)"},
          {"plans-per-frame", "N", "at most N fighters plan a strike in one frame, the others on the next frames, oldest order first (default 14; 0: no limit)"},
          {"steer-until", "S", "predicted aim: the strike follows the head until S before its contact (default 0.15 s; 0: never steers)"},
          {"variety", "N", "prefer a clip not used in the last N strikes when one scores within 0.15 of the best (default 6, 0: always the best)"},
@@ -102,6 +104,8 @@ int run_play(int argc, char** argv) {
     if (!variety) return usage_error(play_spec(), variety.error().message);
     const Result<double> lead_s = arguments.number("lead", 0.0, 5.0, 0.4, "seconds");
     if (!lead_s) return usage_error(play_spec(), lead_s.error().message);
+    const Result<double> contact_extension = arguments.number("contact-extension", 0.5, 1.0, RetrievalSettings{}.contact_extension, "");
+    if (!contact_extension) return usage_error(play_spec(), contact_extension.error().message);
     const Result<double> steer_until_s = arguments.number("steer-until", 0.0, 5.0, FighterSettings{}.steer_until_s, "seconds");
     if (!steer_until_s) return usage_error(play_spec(), steer_until_s.error().message);
     const Result<double> block_speed_limit = arguments.number("block-speed-limit", 0.0, 100.0, 0.0, "times the clip's speed");
@@ -176,6 +180,7 @@ int run_play(int argc, char** argv) {
     BoutOptions options;
     options.fighters = static_cast<int>(*fighters_count);
     options.lead_s = *lead_s;
+    options.contact_extension = *contact_extension;
     options.fighter.steer_until_s = *steer_until_s;
     options.plans_per_frame = static_cast<int>(*plans_per_frame);
     options.fighter.aim = aim;

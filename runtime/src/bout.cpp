@@ -45,6 +45,7 @@ Result<std::unique_ptr<Bout>> Bout::create(const MotionDatabaseView& database, s
 
     RetrievalSettings retrieval_settings;
     retrieval_settings.min_lead_frames = std::max(1, int(std::lround(options.lead_s / database.meta.frame_time_s)));
+    retrieval_settings.contact_extension = options.contact_extension;
     bout->m_retriever = std::make_unique<Retriever>(database, retrieval_settings);
     for (int i = 0; i < options.fighters; ++i) {
         FighterSettings settings = options.fighter;
