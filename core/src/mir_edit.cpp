@@ -102,6 +102,20 @@ void mir_frame_add_offset(MirFrame& frame, const MirFrame& offset, double weight
     }
 }
 
+void mir_frame_take_arms(MirFrame& frame, const MirFrame& from) {
+    const int chest = int(BodyPart::chest);
+    const Eigen::Quaterniond turn = (frame.part_frames[chest] * from.part_frames[chest].conjugate()).normalized();
+    for (const Limb arm : {Limb::arm_l, Limb::arm_r}) {
+        const int limb = int(arm);
+        const BodyPart clavicle = arm == Limb::arm_l ? BodyPart::clavicle_l : BodyPart::clavicle_r;
+        for (const BodyPart part : {clavicle, limb_parts(arm)[0], limb_parts(arm)[1], limb_parts(arm)[2]}) {
+            if (from.has_part[int(part)]) frame.part_frames[int(part)] = (turn * from.part_frames[int(part)]).normalized();
+        }
+        frame.extremity[limb] = from.extremity[limb];
+        frame.swivel[limb] = from.swivel[limb];
+    }
+}
+
 void mir_frame_turn(MirFrame& frame, TrunkPivot pivot, const Eigen::Quaterniond& rotation, const Eigen::Vector3d& pivot_point,
                     double leg_length, double ankle_height) {
     switch (pivot) {

@@ -112,7 +112,7 @@ void Fighter::move(double t_s) {
         // At each loop of the guard: step into the band, or keep guarding, facing the user.
         const Footwork::Next next = p.footwork.next_clip(m_state == FighterState::rest && p.user.tracking(), distance, near_m, far_m, leg);
         if (next.is_step) enter(FighterState::approach, t_s);
-        p.player.start(next.clip, t_s, p.body.mir(), p.user.facing(p.body.heading()), leg, next.step_scale);
+        p.player.start(next.clip, t_s, p.body.mir(), p.user.facing(p.body.heading()), leg, next.step_scale, next.is_step);
     }
     p.player.play(t_s, p.body, m_settings.blend_s);
     p.defence.apply(t_s, false, p.player.pins(), p.body);

@@ -83,3 +83,24 @@ TEST_CASE("motion meter: a fighter's frames by kind of move, its strike's wrist 
     CHECK(meter.distance_m().quantile(0.5) < 2.0);
     CHECK(meter.distance_legs().quantile(0.5) == Approx(meter.distance_m().quantile(0.5) / bout.brawler.anatomy.leg_length).epsilon(0.03));
 }
+
+TEST_CASE("fighter: a step keeps the guard's arms up: elbows bend no faster than in the step clips themselves", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = kumite::test::reference_database();
+    if (!content) return;
+    kumite::test::Bout bout(content->view());
+    MotionMeter meter(1);
+    // A user 3 m away walking back and forth: the fighter steps to keep its distance, many steps in a row.
+    for (int frame = 0; frame < 12 * 60; ++frame) {
+        const double t = frame / 60.0;
+        const Eigen::Vector3d head(0.0, 1.65, 3.0 + 1.0 * std::sin(t * 0.8));
+        bout.fighter->step(t, &head);
+        bout.fighter->clear_events();
+        meter.measure(0, t, *bout.fighter, bout.db, bout.brawler.anatomy, &head);
+    }
+    REQUIRE(meter.frames()[int(MoveKind::step)] > 60);
+    const auto library = library_joint_speeds(bout.db, bout.brawler.skeleton(), bout.brawler.anatomy);
+    // Blended from the guard into the walk's loose arms, the elbows swung at 20-26 rad/s; with the guard's arms kept
+    // they move with the trunk only.
+    CHECK(meter.fastest()[int(MoveKind::step)].elbow_radps <= library[int(MoveKind::step)].elbow_radps);
+    CHECK(meter.fastest()[int(MoveKind::guard)].elbow_radps < 5.0);
+}

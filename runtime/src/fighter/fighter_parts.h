@@ -17,7 +17,7 @@ namespace kumite {
 
 struct Fighter::Parts {
     Parts(const MotionDatabaseView& database, const Retriever& retriever, const std::vector<CharacterRig*>& characters, const FighterSettings& settings)
-        : db(database), user(settings.head_motion), orders(retriever, settings.order_wait_s), footwork(db, settings), player(db), strike(db, settings),
+        : db(database), user(settings.head_motion), orders(retriever, settings.order_wait_s), footwork(db, settings), player(db, footwork.guard_clip()), strike(db, settings),
           planner(db, retriever, settings), defence(db, settings.defence),
           body(db, characters, settings.start_x_m, defence.frames(),
                std::array<MirFrame*, 4>{player.frames()[0], player.frames()[1], player.frames()[2], &strike.start_frame()}) {}

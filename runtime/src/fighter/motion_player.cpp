@@ -7,7 +7,13 @@
 
 namespace kumite {
 
-void MotionPlayer::start(int clip, double t_s, const MirFrame& from, const HeadingFrame& align_on, double leg_length, double step_scale) {
+MotionPlayer::MotionPlayer(const MotionDatabaseView& db, int guard_clip) : m_db(db) {
+    db_mir_frame_load(m_guard_frame, m_db.mir_frames[m_db.clips[guard_clip].first_pose]);
+}
+
+void MotionPlayer::start(int clip, double t_s, const MirFrame& from, const HeadingFrame& align_on, double leg_length, double step_scale,
+                         bool guard_arms) {
+    m_guard_arms = guard_arms;
     m_blend_from = from;
     m_blend_start_s = t_s;
     m_clip = clip;
@@ -41,6 +47,7 @@ void MotionPlayer::play(double t_s, CharacterBody& body, double blend_s) {
         m_clip_frame.hip_centre.x() = m_clip_hip_start.x() + m_clip_scale * (m_clip_frame.hip_centre.x() - m_clip_hip_start.x());
         m_clip_frame.hip_centre.z() = m_clip_hip_start.z() + m_clip_scale * (m_clip_frame.hip_centre.z() - m_clip_hip_start.z());
     }
+    if (m_guard_arms) mir_frame_take_arms(m_clip_frame, m_guard_frame);
     mir_frame_move_on_floor(m_clip_frame, m_clip_to_world, leg);
     const double blend = blend_s > 0.0 ? smoothstep((t_s - m_blend_start_s) / blend_s) : 1.0;
     if (blend < 1.0) {
