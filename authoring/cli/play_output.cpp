@@ -118,6 +118,7 @@ nlohmann::json play_report_json(const Bout& bout) {
             {"impacts", counters.impacts},
             {"follow_throughs", counters.follow_throughs},
             {"overshoot_m", quantiles_of(counters.impact_overshoot_m)},
+            {"held_at_target_s", quantiles_of(counters.impact_held_s)},
             {"effector_speed_at_contact_mps", quantiles_of(counters.contact_speed_mps)},
             {"effector_speed_at_contact_by_kind_mps", contact_speed_by_kind(counters)},
             {"joint_limit_violations", counters.joint_limit_violations},

@@ -239,6 +239,7 @@ void Bout::step(double t_s) {
             case FighterEvent::Type::strike_end:
                 (event.impact ? m_counters.impacts : m_counters.follow_throughs) += 1;
                 if (event.impact) m_counters.impact_overshoot_m.add(event.overshoot_m);
+                if (event.impact) m_counters.impact_held_s.add(event.held_at_target_s);
                 m_counters.joint_limit_violations += event.joint_limit_violations;
                 break;
             default: break;

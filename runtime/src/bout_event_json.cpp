@@ -68,6 +68,7 @@ nlohmann::json event_object(const Bout& bout, const BoutEvent& bout_event) {
         line["clip"] = bout.database().string(bout.database().clips[event.clip].name);
         line["outcome"] = event.impact ? "impact" : "follow_through";
         line["overshoot_m"] = event.overshoot_m;
+        line["held_at_target_s"] = event.held_at_target_s;
         line["joint_limit_violations"] = event.joint_limit_violations;
         break;
     case FighterEvent::Type::character: line["character"] = bout.character_name(event.character); break;

@@ -26,6 +26,8 @@ void Strike::start(double t_s, const Purpose& purpose) {
     m_contact_done = false;
     m_over = false;
     m_overshoot_m = 0.0;
+    m_held_s = 0.0;
+    m_holding = false;
     m_violations = 0;
     m_impact = true;
     m_previous_effector_s = -1.0;
@@ -105,6 +107,11 @@ void Strike::play(double t_s, CharacterBody& body, const TrackedUser& user, Even
         }
         log.push(contact_event);
     }
+    // From the contact on, while the hit point stays where it stopped (the target, or out of reach the nearest point
+    // to it): how long it is held there.
+    if (at_contact) m_holding = true;
+    else if (m_holding && (frame.effector - adapter.stop_point()).norm() <= 0.01 && t_s > m_previous_effector_s) m_held_s += t_s - m_previous_effector_s;
+    else m_holding = false;
     m_previous_effector = frame.effector;
     m_previous_effector_s = t_s;
     body.encode(body.mir());
@@ -114,6 +121,7 @@ void Strike::play(double t_s, CharacterBody& body, const TrackedUser& user, Even
 void Strike::end(double t_s, EventLog& log) {
     FighterEvent end_event = event(FighterEvent::Type::strike_end, t_s);
     end_event.overshoot_m = m_overshoot_m;
+    end_event.held_at_target_s = m_held_s;
     end_event.joint_limit_violations = m_violations;
     log.push(end_event);
 }

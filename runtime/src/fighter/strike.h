@@ -62,6 +62,8 @@ private:
     bool m_over = false;
     bool m_impact = true;
     double m_overshoot_m = 0.0;
+    double m_held_s = 0.0;           // after the contact, within 1 cm of the target
+    bool m_holding = false;          // ... still, this frame
     int m_violations = 0;
     Eigen::Vector3d m_planned_target = Eigen::Vector3d::Zero(); // when it began (before steering)
     Eigen::Vector3d m_previous_effector = Eigen::Vector3d::Zero();

@@ -55,6 +55,7 @@ struct BoutCounters {
     ValueHistogram frame_us{0.1, 1e7};          // every frame's cost
     ValueHistogram command_to_strike_frames{0.5, 1e6};
     ValueHistogram impact_overshoot_m{1e-5, 10.0}; // per strike that stopped at the target (impact): how far past it
+    ValueHistogram impact_held_s{1e-3, 100.0};     // ... and how long it stayed on the target (FighterEvent::held_at_target_s)
     ValueHistogram contact_speed_mps{1e-3, 1e3};   // per strike: the hit point's speed arriving at the contact
     // ... by kind of strike: punch, kick, knee, elbow (MoveKind::punch + i)
     std::array<ValueHistogram, 4> contact_speed_by_kind_mps{ValueHistogram{1e-3, 1e3}, ValueHistogram{1e-3, 1e3}, ValueHistogram{1e-3, 1e3},

@@ -38,6 +38,8 @@ struct FighterEvent {
     bool impact = true;                      // strike and strike_end events: the head was still at the target at
                                              // the contact, so the strike stops there; false: it follows through
     double overshoot_m = 0.0;                // strike_end events: the farthest past the target after the contact
+    double held_at_target_s = 0.0;           // strike_end events: how long the hit point stayed within 1 cm of where
+                                             // it stopped after the contact (a real strike recoils at once)
     int joint_limit_violations = 0;          // strike_end events: joints out of limits, summed over the frames
     FighterAim aim = FighterAim::latched;    // strike events: how the target was chosen
     Eigen::Vector3d target = Eigen::Vector3d::Zero(); // strike events: the target aimed at, world
