@@ -38,7 +38,7 @@ const CommandSpec& adapt_spec() {
                                 "foot drift, support foot, per-frame cost"},
          {"filmstrip", "OUT.png", "the frames around the contact from the side and the front: target, hit path, contact marked"},
          {"lead", "FRAMES", "guard frames before the strike (default 6)"},
-         characters_dir_flag(), json_flag()}};
+         characters_dir_flag(), verify_flag(), json_flag()}};
     return spec;
 }
 

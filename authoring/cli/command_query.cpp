@@ -32,7 +32,7 @@ const CommandSpec& query_spec() {
          height_flag(),
          {"exhaustive", "", "use the exhaustive reference search"},
          {"scaling", "leg|limb", "bring actors' hit paths to the character by leg length (default) or by the striking limb"},
-         characters_dir_flag(), json_flag()}};
+         characters_dir_flag(), verify_flag(), json_flag()}};
     return spec;
 }
 
