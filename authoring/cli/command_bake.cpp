@@ -71,7 +71,7 @@ int run_bake(int argc, char** argv) {
     Result<bake::BakeResult> baked = bake::bake_database(*annotations, annotations_path, options);
     progress.finish();
     if (!baked) return input_error(baked.error().message);
-    for (const std::string& warning : baked->warnings) std::cerr << "warning: " << warning << '\n';
+    for (const bake::BakeWarning& warning : baked->warnings) std::cerr << "warning: " << warning.text() << '\n';
 
     const MotionDatabaseView view = baked->database.view();
     if (Result<void> written = motion_database_write(*output, view); !written) return input_error(written.error().message);
