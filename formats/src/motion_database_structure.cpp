@@ -8,16 +8,17 @@
 namespace kumite::database_checks {
 namespace {
 
+bool string_in_table(const MotionDatabaseView& db, DbString s) { return std::uint64_t(s.offset) + s.length <= db.strings.size(); }
+
 Result<void> check_meta_and_actors(const MotionDatabaseView& db, const Checker& check) {
     const DbMeta& meta = db.meta;
     if (!(meta.frame_time_s > 0.0f && meta.frame_time_s <= 1.0f) || meta.feature_dimensions != k_feature_dimensions ||
         meta.feature_parts != k_feature_point_count || meta.feature_stride < 1 || meta.feature_stride > 1000) {
         return check.fail_at<DbMeta>(k_section_meta, 0, "frame time, feature layout or stride is not one this kumite reads");
     }
-    const auto string_ok = [&](DbString s) { return std::uint64_t(s.offset) + s.length <= db.strings.size(); };
     for (std::size_t a = 0; a < db.actors.size(); ++a) {
         const DbActor& actor = db.actors[a];
-        if (!string_ok(actor.name)) return check.fail_at<DbActor>(k_section_actors, a, "name is outside the string table");
+        if (!string_in_table(db, actor.name)) return check.fail_at<DbActor>(k_section_actors, a, "name is outside the string table");
         const float sizes[] = {actor.leg_length_m, actor.arm_length_m, actor.height_m, actor.ankle_height_m};
         if (!all_finite(sizes) || actor.leg_length_m <= 0.0f || actor.arm_length_m <= 0.0f) {
             return check.fail_at<DbActor>(k_section_actors, a, "sizes must be finite and positive");
@@ -29,12 +30,11 @@ Result<void> check_meta_and_actors(const MotionDatabaseView& db, const Checker& 
 // Clips tile the poses in order: clip c's poses are first_pose .. first_pose + frame_count - 1, so a pose index
 // reached through a clip and a frame below its frame count is always inside POSE, MIRF and FEAT.
 Result<void> check_clips(const MotionDatabaseView& db, const Checker& check) {
-    const auto string_ok = [&](DbString s) { return std::uint64_t(s.offset) + s.length <= db.strings.size(); };
     std::uint64_t next_pose = 0;
     for (std::size_t c = 0; c < db.clips.size(); ++c) {
         const DbClip& clip = db.clips[c];
         auto fail = [&](const std::string& what) { return check.fail_at<DbClip>(k_section_clips, c, what); };
-        if (!string_ok(clip.name) || !string_ok(clip.semantics) || !string_ok(clip.source)) return fail("a name is outside the string table");
+        if (!string_in_table(db, clip.name) || !string_in_table(db, clip.semantics) || !string_in_table(db, clip.source)) return fail("a name is outside the string table");
         if (clip.actor >= db.actors.size()) return fail("actor " + out_of_range(clip.actor, db.actors.size(), "actors"));
         if (clip.frame_count == 0 || clip.first_pose != next_pose || next_pose + clip.frame_count > db.poses.size()) {
             return fail("its poses must follow the previous clip's within the " + std::to_string(db.poses.size()) + " poses");
