@@ -18,7 +18,7 @@ namespace kumite::cli {
 const CommandSpec& bake_spec() {
     static const CommandSpec spec{
         "bake",
-        "ANNOTATIONS.json -o OUT.kdb [--mocap-root DIR] [--clusters K] [--exr DIR] [--jobs N] [--fps N]",
+        "ANNOTATIONS.json -o OUT.kdb [--mocap-root DIR] [--clusters K] [--exr DIR] [--jobs N] [--fps N] [--verbose]",
         "Bakes the annotated clips (and their mirrors) into one motion database: clips resampled to 30 fps and\n"
         "stored in the morphology-independent representation, per-pose features, foot contacts and hit-trajectory\n"
         "boxes, and k-means clusters of all poses under Kovar's distance. The same inputs give the same bytes.\n"

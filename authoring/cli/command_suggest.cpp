@@ -17,7 +17,7 @@ namespace kumite::cli {
 const CommandSpec& suggest_spec() {
     static const CommandSpec spec{
         "suggest",
-        "FILE.bvh... [--segment PART] [--json]",
+        "FILE.bvh... [--segment PART] [--verbose] [--json]",
         "Proposes the strikes in captures: punches (hand extension peaks in front of the chest after a fast\n"
         "move), kicks (a straight leg raised, its foot reaching out), knee strikes (a folded leg whose knee rises)\n"
         "and elbow strikes (an elbow driven up with the fist folded by the head), each with its hit frame and span. With --segment\n"
