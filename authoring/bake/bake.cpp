@@ -55,11 +55,11 @@ void assemble_clusters(MotionDatabaseContent& db, const PoseClusters& clusters) 
 
 // Leg strikes start only where the support foot is planted (retrieval.h): one whose support foot never is,
 // from its first frame to its hit, bakes but can never be chosen.
-void warn_unservable_strikes(const MotionDatabaseView& db, std::string_view annotations_name, std::vector<std::string>& warnings) {
+void warn_unservable_strikes(const MotionDatabaseView& db, std::string_view annotations_name, std::vector<BakeWarning>& warnings) {
     for (const DbClip& clip : db.clips) {
         if (db_clip_support_foot(clip) && db_clip_support_down_until(db, clip) < 0) {
-            warnings.push_back(std::string(annotations_name) + ": clip " + std::string(db.string(clip.name)) +
-                               ": the support foot is never planted before the hit; retrieval will never start this strike");
+            warnings.push_back({std::string(annotations_name) + ": clip " + std::string(db.string(clip.name)),
+                                "the support foot is never planted before the hit; retrieval will never start this strike"});
         }
     }
 }

@@ -41,13 +41,21 @@ struct BakedMotion {
     Clip clip;
 };
 
+// Something the bake says about its input: a capture it repaired, a clip that baked but will not serve as annotated.
+struct BakeWarning {
+    std::string where; // the capture's path, or "ANNOTATIONS: clip NAME"
+    std::string what;
+    std::string text() const { return where + ": " + what; }
+};
+
 struct BakeResult {
     MotionDatabaseContent database;
     std::vector<BakedMotion> motions; // [clip] when keep_motion
     double seconds = 0.0;
-    // What baked but will not serve as annotated, one line each naming the clip (a leg strike whose support foot
-    // is never planted before its hit: retrieval never starts it from a standing fighter).
-    std::vector<std::string> warnings;
+    // In the order of the captures, then of the clips: captures whose pinned root was moved to follow the feet, and
+    // what baked but will not serve as annotated (a leg strike whose support foot is never planted before its hit:
+    // retrieval never starts it from a standing fighter).
+    std::vector<BakeWarning> warnings;
 };
 
 // Errors name the annotation file, the clip and what is wrong (a missing capture, a frame past its end, a

@@ -81,9 +81,9 @@ Result<std::vector<BakeSource>> bake_read_sources(const RawAnnotations& annotati
             if (moved.support_slide_before_m > 0.0) {
                 char line[256];
                 std::snprintf(line, sizeof line,
-                              ": the root never moves (the foot it stands on slid %.0f cm); the root now follows the lower foot "
+                              "the root never moves (the foot it stands on slid %.0f cm); the root now follows the lower foot "
                               "(moving up to %.0f cm)", 100.0 * moved.support_slide_before_m, 100.0 * moved.root_travel_m);
-                source.notes.push_back(source.path.string() + line);
+                source.notes.push_back({source.path.string(), line});
             }
         }
         if (mirrored[index]) {

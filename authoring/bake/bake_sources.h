@@ -19,7 +19,7 @@ struct BakeSource {
     RestAnatomy anatomy;
     std::optional<MirrorSymmetry> symmetry; // when a clip asks for its mirror
     int actor = -1;
-    std::vector<std::string> notes;         // what the bake repaired in the capture, for the bake's warnings
+    std::vector<BakeWarning> notes;         // what the bake repaired in the capture, for the bake's warnings
 };
 
 struct BakeActor {

@@ -123,6 +123,14 @@ FlagSpec body_map_flag() {
     return {"body-map", "FILE.json", "body map override (default: FILE.bodymap.json beside the capture, if any)"};
 }
 FlagSpec json_flag() { return {"json", "", "print one JSON document on stdout"}; }
+FlagSpec verbose_flag() {
+    return {"verbose", "", "list every warning on its own line (default: one line per kind of warning, the first in full\n"
+                           "with how many there are)"};
+}
+FlagSpec verify_flag() {
+    return {"verify", "", "also check every per-pose value (pose records, MIR frames, features, cluster members) and the\n"
+                          "content hash; opening alone checks the structure only, in the same time for any size"};
+}
 
 std::optional<int> parse_command_line(const CommandSpec& spec, int argc, char** argv, Arguments& arguments) {
     Result<ParseOutcome> outcome = parse_arguments(spec, argc, argv);

@@ -59,6 +59,9 @@ FlagSpec fps_flag();    // --fps N: the rate of a capture whose file gives none
 FlagSpec mocap_root_flag();
 FlagSpec body_map_flag();
 FlagSpec json_flag();
+FlagSpec verbose_flag(); // --verbose: every warning, not one line per kind (warning_groups.h)
+// Flags every command that opens a motion database shares.
+FlagSpec verify_flag(); // --verify: check every per-pose value and the content hash, not only the structure
 
 // Parses and handles --help and usage errors: returns the exit status when the command should stop now.
 std::optional<int> parse_command_line(const CommandSpec& spec, int argc, char** argv, Arguments& arguments);

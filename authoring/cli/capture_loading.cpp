@@ -1,5 +1,7 @@
 #include "capture_loading.h"
 
+#include "warning_groups.h"
+
 #include "kumite/formats/capture_file.h"
 
 #include <cmath>
@@ -61,9 +63,13 @@ std::filesystem::path resolve_capture_path(const std::filesystem::path& path, co
 }
 
 Result<BvhFile> load_capture(const std::filesystem::path& given_path, const CaptureOptions& options) {
-    Result<BvhFile> file = capture_read_file(resolve_capture_path(given_path, options.mocap_root), options.read, options.body_map_file);
+    const std::filesystem::path path = resolve_capture_path(given_path, options.mocap_root);
+    Result<BvhFile> file = capture_read_file(path, options.read, options.body_map_file);
     if (file) {
-        for (const std::string& warning : file->warnings) std::cerr << "warning: " << warning << "\n";
+        for (const std::string& warning : file->warnings) {
+            if (options.warnings) options.warnings->add_from_reader(path.string(), warning);
+            else std::cerr << "warning: " << warning << "\n";
+        }
     }
     return file;
 }

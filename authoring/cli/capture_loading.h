@@ -14,10 +14,15 @@
 
 namespace kumite::cli {
 
+class WarningGroups;
+
 struct CaptureOptions {
     BvhReadOptions read;
     std::filesystem::path mocap_root;
     std::optional<std::filesystem::path> body_map_file;
+    // Where the captures' warnings go when a command reads many (printed grouped at its end); null: each capture's
+    // warnings straight to stderr.
+    WarningGroups* warnings = nullptr;
 };
 
 // Reads the shared flags; a bad --unit is a usage error.
@@ -34,7 +39,8 @@ Result<void> require_frame_rate(const BvhFile& file, const std::filesystem::path
 std::filesystem::path resolve_capture_path(const std::filesystem::path& path, const std::filesystem::path& mocap_root);
 
 // Reads the capture and applies --body-map, or the sidecar FILE.bodymap.json when there is one.
-// The file's warnings (what it tolerated) go to stderr, one "warning: file:line: ..." line each.
+// The file's warnings (what it tolerated) go to options.warnings, else to stderr, one "warning: file:line: ..."
+// line each.
 Result<BvhFile> load_capture(const std::filesystem::path& path, const CaptureOptions& options);
 
 // A capture that work over time can use: loaded (load_capture), with a frame rate (require_frame_rate, for

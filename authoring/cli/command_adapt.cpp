@@ -19,7 +19,7 @@ namespace kumite::cli {
 const CommandSpec& adapt_spec() {
     static const CommandSpec spec{
         "adapt",
-        "[DB.kdb] --character NAME --target X,Y,Z --command punch|kick [--side left|right|any] [--kind KIND] [--height H] --record OUT.bvh|OUT.glb --report OUT.json",
+        "[DB.kdb] --character NAME --target X,Y,Z --command punch|kick [--side left|right|any] [--kind KIND] [--height H] --record OUT.bvh|OUT.glb --report OUT.json [--verify]",
         "Plays the strike the retrieval picks for a character standing at the origin (facing +Z, in the guard):\n"
         "a short guard hold, then the clip blended in, decoded onto the character, its hit segment driven onto\n"
         "the target at the clip's annotated hit frame by the constraint ramp (limb IK, then CCD over the trunk when\n"
@@ -38,7 +38,7 @@ const CommandSpec& adapt_spec() {
                                 "foot drift, support foot, per-frame cost"},
          {"filmstrip", "OUT.png", "the frames around the contact from the side and the front: target, hit path, contact marked"},
          {"lead", "FRAMES", "guard frames before the strike (default 6)"},
-         characters_dir_flag(), json_flag()}};
+         characters_dir_flag(), verify_flag(), json_flag()}};
     return spec;
 }
 

@@ -3,6 +3,7 @@
 #include "capture_loading.h"
 #include "commands.h"
 #include "progress_display.h"
+#include "warning_groups.h"
 
 #include "bake.h"
 #include "exr_export.h"
@@ -17,11 +18,13 @@ namespace kumite::cli {
 const CommandSpec& bake_spec() {
     static const CommandSpec spec{
         "bake",
-        "ANNOTATIONS.json -o OUT.kdb [--mocap-root DIR] [--clusters K] [--exr DIR] [--jobs N] [--fps N]",
+        "ANNOTATIONS.json -o OUT.kdb [--mocap-root DIR] [--clusters K] [--exr DIR] [--jobs N] [--fps N] [--verbose]",
         "Bakes the annotated clips (and their mirrors) into one motion database: clips resampled to 30 fps and\n"
         "stored in the morphology-independent representation, per-pose features, foot contacts and hit-trajectory\n"
         "boxes, and k-means clusters of all poses under Kovar's distance. The same inputs give the same bytes.\n"
-        "--exr DIR also writes the pose-distance matrix and one animation texture per clip as OpenEXR images.",
+        "--exr DIR also writes the pose-distance matrix and one animation texture per clip as OpenEXR images.\n"
+        "Warnings (captures repaired, clips that will not serve as annotated) come one line per kind, with how many;\n"
+        "--verbose lists every one.",
         1, 1,
         {{"output", "OUT.kdb", "the database to write (also -o); written to a temporary, then renamed"},
          mocap_root_flag(),
@@ -30,7 +33,8 @@ const CommandSpec& bake_spec() {
          {"jobs", "N", "threads to use (default: every core)"},
          {"fps", "N", "frame rate of captures whose files give none ('Frame Time: 0') and the annotation file's\n"
                       "\"captures\" does not list"},
-         {"database-fps", "F", "database frame rate (default 30)"}}};
+         {"database-fps", "F", "database frame rate (default 30)"},
+         verbose_flag()}};
     return spec;
 }
 
@@ -71,7 +75,9 @@ int run_bake(int argc, char** argv) {
     Result<bake::BakeResult> baked = bake::bake_database(*annotations, annotations_path, options);
     progress.finish();
     if (!baked) return input_error(baked.error().message);
-    for (const std::string& warning : baked->warnings) std::cerr << "warning: " << warning << '\n';
+    WarningGroups warnings;
+    for (const bake::BakeWarning& warning : baked->warnings) warnings.add(warning.where, warning.what);
+    warnings.print(std::cerr, arguments.has("verbose"));
 
     const MotionDatabaseView view = baked->database.view();
     if (Result<void> written = motion_database_write(*output, view); !written) return input_error(written.error().message);

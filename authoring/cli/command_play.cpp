@@ -36,7 +36,7 @@ const CommandSpec& play_spec() {
         "play",
         "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:HEAD[,LEFT,RIGHT]] | replay:FILE | simulate:KIND|FILE] "
         "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] "
-        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json]",
+        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
         "Runs the fighter at 60 Hz against the user's head and hands (a DTrack system, a replayed CSV, or a\n"
         "simulated user) and the supervisor's commands, one per line: punch [left|right] [straight|hook|uppercut]\n"
         "[low|middle|high], kick [left|right] [front|roundhouse|side] [low|middle|high], slash [left|right] [low|middle|high],\n"
@@ -79,7 +79,7 @@ const CommandSpec& play_spec() {
          {"events", "OUT.jsonl", "one JSON object per event"},
          {"html", "OUT.html", "the session report: one page with the summary, a timeline, the room from above and distributions (also kumite report)"},
          {"report", "OUT.json", "frames, frame times, orders, strikes, hits, misses, impacts, overshoot, joint-limit violations, tracker counts"},
-         characters_dir_flag(), json_flag()}};
+         characters_dir_flag(), verify_flag(), json_flag()}};
     return spec;
 }
 
@@ -171,7 +171,7 @@ int run_play(int argc, char** argv) {
     // The database and every character (any of them can be switched to).
     Result<std::filesystem::path> database_path = database_path_from(arguments);
     if (!database_path) return input_error(database_path.error().message);
-    Result<MotionDatabase> database = MotionDatabase::open(*database_path);
+    Result<MotionDatabase> database = MotionDatabase::open(*database_path, arguments.has("verify"));
     if (!database) return input_error(database.error().message);
     const std::optional<std::string> folder = arguments.value("characters-dir");
     const std::filesystem::path characters_dir = folder ? std::filesystem::path(*folder) : default_characters_dir();

@@ -17,7 +17,7 @@ namespace kumite::cli {
 const CommandSpec& query_spec() {
     static const CommandSpec spec{
         "query",
-        "[DB.kdb] --character NAME (--target X,Y,Z | --targets FILE.csv) --command SEMANTICS [--side left|right|any] [--kind KIND] [--height H] [--exhaustive] [--json]",
+        "[DB.kdb] --character NAME (--target X,Y,Z | --targets FILE.csv) --command SEMANTICS [--side left|right|any] [--kind KIND] [--height H] [--exhaustive] [--verify] [--json]",
         "Retrieves the strike clip and start pose that suit a character standing at the origin, facing +Z, in\n"
         "the database's guard pose, and a target in world metres (Y up). A k-d tree of pose keys and hit points\n"
         "is searched best bound first with exact bounds; --exhaustive scores every start of every clip instead (the\n"
@@ -32,7 +32,7 @@ const CommandSpec& query_spec() {
          height_flag(),
          {"exhaustive", "", "use the exhaustive reference search"},
          {"scaling", "leg|limb", "bring actors' hit paths to the character by leg length (default) or by the striking limb"},
-         characters_dir_flag(), json_flag()}};
+         characters_dir_flag(), verify_flag(), json_flag()}};
     return spec;
 }
 

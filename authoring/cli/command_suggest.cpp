@@ -2,6 +2,7 @@
 
 #include "capture_loading.h"
 #include "commands.h"
+#include "warning_groups.h"
 #include "kumite/core/strike_detection.h"
 #include "kumite/formats/annotation_file.h"
 
@@ -16,7 +17,7 @@ namespace kumite::cli {
 const CommandSpec& suggest_spec() {
     static const CommandSpec spec{
         "suggest",
-        "FILE.bvh... [--segment PART] [--json]",
+        "FILE.bvh... [--segment PART] [--verbose] [--json]",
         "Proposes the strikes in captures: punches (hand extension peaks in front of the chest after a fast\n"
         "move), kicks (a straight leg raised, its foot reaching out), knee strikes (a folded leg whose knee rises)\n"
         "and elbow strikes (an elbow driven up with the fist folded by the head), each with its hit frame and span. With --segment\n"
@@ -26,12 +27,13 @@ const CommandSpec& suggest_spec() {
         "(low/middle/high). --compare ANNOTATIONS.json proposes kind and height for every labelled strike of an\n"
         "annotation file and prints how often they agree with its labels, with the confusion tables. With captures\n"
         "and --compare, it scores the detection instead: per folder, recall and precision against the file's\n"
-        "strikes of those captures (same semantics and side, hits within 0.25 s), kind agreement, confusion tables.",
+        "strikes of those captures (same semantics and side, hits within 0.25 s), kind agreement, confusion tables.\n"
+        "The captures' warnings come at the end, one line per kind with how many; --verbose lists every one.",
         0, 100000,
         {{"segment", "PART", "a body part (hand_l, foot_r, head, ...): report its extension peaks"},
          {"write-annotations", "OUT.json", "write every suggestion as a clip of an annotation file ready for bake"},
          {"compare", "ANNOTATIONS.json", "compare with the file's labels (alone), or score the detection on the captures given"},
-         unit_flag(), strict_flag(), fps_flag(), mocap_root_flag(), body_map_flag(), json_flag()}};
+         unit_flag(), strict_flag(), fps_flag(), mocap_root_flag(), body_map_flag(), verbose_flag(), json_flag()}};
     return spec;
 }
 
@@ -63,14 +65,13 @@ int run_compare(const std::string& annotations_path, const CaptureOptions& optio
 int run_detection_compare(const std::vector<std::string>& paths, const std::string& annotations_path, const CaptureOptions& options,
                           bool as_json); // suggest_detection.cpp
 
-int run_suggest(int argc, char** argv) {
-    Arguments arguments;
-    if (std::optional<int> status = parse_command_line(suggest_spec(), argc, argv, arguments)) return *status;
-    Result<CaptureOptions> options = capture_options_from(arguments);
-    if (!options) return usage_error(suggest_spec(), options.error().message);
+namespace {
+
+// Everything suggest does after its flags: the captures' strikes, or the comparisons (--compare).
+int suggest_from(const Arguments& arguments, const CaptureOptions& options) {
     if (const std::optional<std::string> compare = arguments.value("compare")) {
-        if (!arguments.positionals.empty()) return run_detection_compare(arguments.positionals, *compare, *options, arguments.has("json"));
-        return run_compare(*compare, *options, arguments.has("json"));
+        if (!arguments.positionals.empty()) return run_detection_compare(arguments.positionals, *compare, options, arguments.has("json"));
+        return run_compare(*compare, options, arguments.has("json"));
     }
     if (arguments.positionals.empty()) return usage_error(suggest_spec(), "give captures to look at, or --compare ANNOTATIONS.json");
     std::optional<BodyPart> segment;
@@ -82,12 +83,12 @@ int run_suggest(int argc, char** argv) {
     nlohmann::json files = nlohmann::json::array();
     RawAnnotations annotations;
     for (const std::string& path : arguments.positionals) {
-        Result<TimedCapture> capture = load_timed_capture(path, *options, "suggest (strike speeds)");
+        Result<TimedCapture> capture = load_timed_capture(path, options, "suggest (strike speeds)");
         if (!capture) return input_error(capture.error().message);
         const BvhFile* file = &capture->file;
         const std::vector<StrikeSuggestion> strikes = strikes_detect(file->clip, capture->anatomy, segment);
         files.push_back({{"file", path}, {"strikes", strikes_json(strikes)}});
-        const std::string source = source_relative_to_root(resolve_capture_path(path, options->mocap_root), options->mocap_root);
+        const std::string source = source_relative_to_root(resolve_capture_path(path, options.mocap_root), options.mocap_root);
         if (!file->frame_rate_in_file) annotations.capture_fps[source] = 1.0 / file->clip.frame_time_s; // the bake needs it too
         for (const StrikeSuggestion& strike : strikes) annotations.clips.push_back(clip_from_suggestion(strike, source));
     }
@@ -111,6 +112,20 @@ int run_suggest(int argc, char** argv) {
         }
     }
     return k_exit_ok;
+}
+
+} // namespace
+
+int run_suggest(int argc, char** argv) {
+    Arguments arguments;
+    if (std::optional<int> status = parse_command_line(suggest_spec(), argc, argv, arguments)) return *status;
+    Result<CaptureOptions> options = capture_options_from(arguments);
+    if (!options) return usage_error(suggest_spec(), options.error().message);
+    WarningGroups warnings; // a folder of captures with one quirk: one line, not one per file
+    options->warnings = &warnings;
+    const int status = suggest_from(arguments, *options);
+    warnings.print(std::cerr, arguments.has("verbose"));
+    return status;
 }
 
 namespace {

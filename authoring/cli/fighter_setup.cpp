@@ -60,7 +60,7 @@ std::optional<int> fighter_setup(FighterSetup& setup, const CommandSpec& spec, c
     Result<std::filesystem::path> path = database_path_from(arguments);
     if (!path) return input_error(path.error().message);
     setup.database_path = path->string();
-    Result<MotionDatabase> database = MotionDatabase::open(*path);
+    Result<MotionDatabase> database = MotionDatabase::open(*path, arguments.has("verify"));
     if (!database) return input_error(database.error().message);
     setup.database = std::move(*database);
     Result<std::unique_ptr<StrikeStage>> stage =

@@ -214,7 +214,9 @@ py::dict bake_annotations(const std::string& annotations_path, const std::string
     summary["clusters"] = view.clusters.size();
     summary["actors"] = view.actors.size();
     summary["seconds"] = baked.seconds;
-    summary["warnings"] = baked.warnings;
+    std::vector<std::string> warnings;
+    for (const bake::BakeWarning& warning : baked.warnings) warnings.push_back(warning.text());
+    summary["warnings"] = warnings;
     return summary;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <cmath>
 #include <limits>
 
 namespace kumite {
@@ -39,8 +40,11 @@ int BoxTree::build(std::span<const float> points, std::span<const float> split_s
     }
     if (!(widest_width > 0.0f)) return index; // every point the same: a leaf, however many
     const std::uint32_t middle = begin + (end - begin) / 2;
+    // NaN sorts after every number: a strict weak order whatever the points hold (a plain < with a NaN is not one,
+    // and nth_element may then run past the range).
     std::nth_element(order.begin() + begin, order.begin() + middle, order.begin() + end, [&](std::uint32_t a, std::uint32_t b) {
-        return points[std::size_t(a) * dims + widest] < points[std::size_t(b) * dims + widest];
+        const float x = points[std::size_t(a) * dims + widest], y = points[std::size_t(b) * dims + widest];
+        return x < y || (!std::isnan(x) && std::isnan(y));
     });
     build(points, split_scale, order, begin, middle, leaf_size, depth + 1); // the left child is index + 1
     const int right = build(points, split_scale, order, middle, end, leaf_size, depth + 1);

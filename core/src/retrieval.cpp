@@ -58,7 +58,13 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
         if (const int down = db_clip_support_down_until(m_db, clip); down >= 0) info.support_down_until = int(clip.first_pose) + down;
     }
 
+    // A pose's clip is the one whose range holds it: the clip table tiles the poses (checked at open), while the
+    // pose record's own clip and frame are values only a verify checks, never followed here.
     m_poses.resize(m_db.poses.size());
+    for (std::size_t c = 0; c < m_db.clips.size(); ++c) {
+        const DbClip& clip = m_db.clips[c];
+        for (std::uint32_t f = 0; f < clip.frame_count; ++f) m_poses[clip.first_pose + f].clip = static_cast<std::uint32_t>(c);
+    }
     for (std::size_t p = 0; p < m_db.poses.size(); ++p) {
         m_poses[p].heading_cos = std::cos(m_db.poses[p].heading[2]);
         m_poses[p].heading_sin = std::sin(m_db.poses[p].heading[2]);
@@ -70,6 +76,7 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
         double radius = 0.0;
         for (std::uint32_t m = 0; m < cluster.member_count; ++m) {
             const std::uint32_t pose = m_db.members[cluster.first_member + m];
+            if (pose >= m_poses.size()) continue; // a corrupt member (verify names it): never followed
             const double distance = rms_distance(m_db.centroid(c), m_db.feature(pose));
             m_poses[pose].distance_to_centroid = static_cast<float>(distance);
             radius = std::max(radius, distance);
@@ -86,11 +93,13 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
         const int group_cluster = m_settings.trees_per_cluster ? c : 0;
         for (std::uint32_t m = 0; m < cluster.member_count; ++m) {
             const std::uint32_t pose = m_db.members[cluster.first_member + m];
-            const ClipInfo& clip = m_clips[m_db.poses[pose].clip];
+            if (pose >= m_poses.size()) continue;
+            const std::uint32_t clip_index = m_poses[pose].clip;
+            const ClipInfo& clip = m_clips[clip_index];
             if (int(pose) < clip.first_start || int(pose) >= clip.end_start) continue;
             const int key = order_key(clip.semantics, clip.side, clip.arm_strike, clip.kind, clip.height);
             const DbPose& start = m_db.poses[pose];
-            const DbPose& hit = m_db.poses[m_db.clips[start.clip].first_pose + clip.contact_frame];
+            const DbPose& hit = m_db.poses[m_db.clips[clip_index].first_pose + clip.contact_frame];
             const Eigen::Vector3d hit_in_start =
                 to_start_heading(start, m_poses[pose].heading_cos, m_poses[pose].heading_sin, hit.hit_point) / clip.actor_scale_length;
             Candidate candidate{};
@@ -198,7 +207,7 @@ bool Retriever::obeys(const ClipInfo& clip, const RetrievalQuery& query) const {
 }
 
 bool Retriever::excluded(std::uint32_t pose, const RetrievalQuery& query) const {
-    const int clip = static_cast<int>(m_db.poses[pose].clip);
+    const int clip = static_cast<int>(m_poses[pose].clip);
     return std::find(query.excluded_clips.begin(), query.excluded_clips.end(), clip) != query.excluded_clips.end();
 }
 
@@ -212,8 +221,9 @@ double Retriever::scale_to_character(const ClipInfo& clip, const CharacterSize& 
 
 bool Retriever::score_start(int pose_index, const RetrievalQuery& query, double d_pose, RetrievalResult& best) const {
     const DbPose& start = m_db.poses[pose_index];
-    const ClipInfo& clip = m_clips[start.clip];
-    const DbClip& record = m_db.clips[start.clip];
+    const std::uint32_t clip_index = m_poses[pose_index].clip;
+    const ClipInfo& clip = m_clips[clip_index];
+    const DbClip& record = m_db.clips[clip_index];
     const double scale = scale_to_character(clip, query.character);
     const Eigen::Vector3d target_in_start = query.heading.to_heading(query.target_world) / scale; // the paper's c_r
     const PoseInfo& info = m_poses[pose_index];
@@ -222,9 +232,9 @@ bool Retriever::score_start(int pose_index, const RetrievalQuery& query, double 
     const double score = m_settings.pose_weight * d_pose + m_settings.target_weight * d_target_m / query.character.leg_length_m;
     if (!(score < best.score)) return false;
     best.found = true;
-    best.clip = static_cast<int>(start.clip);
+    best.clip = static_cast<int>(clip_index);
     best.start_pose = pose_index;
-    best.start_frame = static_cast<int>(start.frame);
+    best.start_frame = pose_index - static_cast<int>(record.first_pose);
     best.contact_frame = clip.contact_frame;
     best.d_pose = d_pose;
     best.d_target_m = d_target_m;
@@ -373,7 +383,10 @@ RetrievalResult Retriever::query(const RetrievalQuery& query, RetrievalWorkspace
             const int group = c * m_order_keys + key;
             if (m_group_root[group] < 0) return;
             const GroupQuery prepared = group_query(group, centroid_distance, query_key, query, target_in_heading);
-            workspace.group_order[groups++] = {node_bound(m_group_root[group], prepared), group};
+            const double bound = node_bound(m_group_root[group], prepared);
+            // A NaN bound (NaN in a feature or the query) is never below the best score, like infinity; as infinity it
+            // also sorts.
+            workspace.group_order[groups++] = {std::isnan(bound) ? std::numeric_limits<double>::infinity() : bound, group};
         });
     }
     std::sort(workspace.group_order.begin(), workspace.group_order.begin() + groups);

@@ -127,6 +127,7 @@ Result<DatabaseImage> DatabaseImage::view(std::span<const std::byte> bytes, std:
     }
     DatabaseImage image;
     image.m_bytes = bytes;
+    image.m_source_name = source;
     image.m_format_version = read_le<std::uint32_t>(bytes, 8);
     if (image.m_format_version != k_database_format_version) {
         return fail(8, "format version " + std::to_string(image.m_format_version) + ", this kumite reads version " +
@@ -167,10 +168,15 @@ Result<DatabaseImage> DatabaseImage::view(std::span<const std::byte> bytes, std:
         section.bytes = bytes.subspan(section.offset, size);
         image.m_sections.push_back(section);
     }
-    if (verify_hash && database_content_hash(bytes.subspan(k_header_size)) != image.m_content_hash) {
-        return fail(24, "the content hash does not match: the file is corrupt");
+    if (verify_hash) {
+        if (Result<void> hashed = image.verify_hash(); !hashed) return hashed.error();
     }
     return image;
+}
+
+Result<void> DatabaseImage::verify_hash() const {
+    if (database_content_hash(m_bytes.subspan(k_header_size)) == m_content_hash) return {};
+    return make_error(ErrorCode::invalid, m_source_name + ": byte 24: the content hash does not match: the file is corrupt");
 }
 
 Result<DatabaseImage> DatabaseImage::open(const std::filesystem::path& path, bool verify_hash) {

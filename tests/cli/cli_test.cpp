@@ -5,7 +5,9 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 using kumite::test::run_command;
@@ -314,6 +316,42 @@ TEST_CASE("cli: db-info refuses flipped, truncated, empty and foreign files with
     CHECK_THAT(refused("truncated.kdb", bytes.substr(0, bytes.size() - 100), ""), Catch::Contains("truncated"));
     CHECK_THAT(refused("empty.kdb", "", ""), Catch::Contains("empty"));
     CHECK_THAT(refused("foreign.kdb", k_small_bvh, ""), Catch::Contains("not a kumite database"));
+}
+
+TEST_CASE("cli: a per-pose value opening does not read is refused by --verify, on db-info and the runtime commands", "[cli]") {
+    // The golden database with one feature value made NaN: the structure is intact, so opening accepts it.
+    const std::filesystem::path golden = kumite::test::source_dir() / "data/golden/golden-v2.kdb";
+    const auto info = run_command(kumite_exe() + " db-info " + golden.string() + " --json");
+    REQUIRE(info.status == 0);
+    const nlohmann::json summary = nlohmann::json::parse(info.out);
+    CHECK(summary["values_verified"] == false);
+    CHECK(summary["verify_us"].is_null());
+    std::uint64_t features = 0;
+    for (const auto& section : summary["sections"]) {
+        if (section["tag"] == "FEAT") features = section["offset"].get<std::uint64_t>();
+    }
+    REQUIRE(features > 0);
+    std::string bytes = file_bytes(golden);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    std::memcpy(bytes.data() + features + 5 * sizeof(float), &nan, sizeof nan);
+    const std::filesystem::path corrupt = kumite::test::make_temp_dir("cli-verify") / "nan.kdb";
+    std::ofstream(corrupt, std::ios::binary) << bytes;
+
+    CHECK(run_command(kumite_exe() + " db-info " + corrupt.string()).status == 0); // opening reads no feature
+    const auto verified = run_command(kumite_exe() + " db-info " + corrupt.string() + " --verify");
+    CHECK(verified.status == 1);
+    CHECK_THAT(verified.err, Catch::Contains(corrupt.string()) && Catch::Contains("FEAT 5") && Catch::Contains("not a finite number"));
+    const auto query = run_command(kumite_exe() + " query " + corrupt.string() + " --character kid --target 0,1,0.5 --command punch --verify");
+    CHECK(query.status == 1);
+    CHECK_THAT(query.err, Catch::Contains("FEAT 5"));
+
+    const auto good = run_command(kumite_exe() + " db-info " + golden.string() + " --verify --json");
+    REQUIRE(good.status == 0);
+    const nlohmann::json checked = nlohmann::json::parse(good.out);
+    CHECK(checked["values_verified"] == true);
+    CHECK(checked["hash_verified"] == true);
+    CHECK(checked["verify_us"].get<double>() > 0.0);
+    CHECK(checked["open_us"].get<double>() > 0.0);
 }
 
 TEST_CASE("cli: bake usage and input errors leave no file behind", "[cli]") {

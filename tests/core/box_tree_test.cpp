@@ -21,6 +21,7 @@ int check_subtree(const BoxTree& tree, int node, const std::vector<float>& point
     for (std::uint32_t k = n.begin; k < n.end; ++k) {
         for (int d = 0; d < dims; ++d) {
             const float value = points[std::size_t(order[k]) * dims + d];
+            if (std::isnan(value)) continue; // in no box: a NaN bounds nothing
             REQUIRE(value >= tree.low(node)[d]);
             REQUIRE(value <= tree.high(node)[d]);
         }
@@ -76,4 +77,44 @@ TEST_CASE("box_tree: identical points make one leaf", "[core]") {
     const int root = tree.add(points, scale, order, 0, 50, 4);
     CHECK(tree.node(root).leaf());
     CHECK(tree.node_count() == 1);
+}
+
+TEST_CASE("box_tree: NaN coordinates still give a permutation split into balanced ranges, NaN after the numbers", "[core]") {
+    SplitMix64 random{9};
+    const int dims = 3;
+    const std::uint32_t count = 2000;
+    std::vector<float> points(std::size_t(count) * dims);
+    for (float& value : points) value = random.uniform(0.0, 1.0) < 0.3 ? NAN : static_cast<float>(random.uniform(-1.0, 1.0));
+    std::vector<float> scale(dims, 1.0f);
+    std::vector<std::uint32_t> order(count);
+    std::iota(order.begin(), order.end(), 0u);
+    BoxTree tree(dims);
+    const int root = tree.add(points, scale, order, 0, count, 4);
+    std::vector<std::uint32_t> sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    for (std::uint32_t k = 0; k < count; ++k) REQUIRE(sorted[k] == k);
+    CHECK(check_subtree(tree, root, points, order, 4) <= std::ceil(std::log2(count / 4.0)) + 2);
+    // The root's split: every number on the left is at most every number on the right, and no NaN lies left of a
+    // number (NaN sorts last).
+    const BoxTree::Node& top = tree.node(root);
+    REQUIRE_FALSE(top.leaf());
+    int split = 0;
+    float widest = -1.0f;
+    for (int d = 0; d < dims; ++d) {
+        const float width = tree.high(root)[d] - tree.low(root)[d];
+        if (width > widest) widest = width, split = d;
+    }
+    float left_max = -INFINITY;
+    bool left_nan = false;
+    for (std::uint32_t k = top.begin; k < tree.node(root + 1).end; ++k) {
+        const float value = points[std::size_t(order[k]) * dims + split];
+        if (std::isnan(value)) left_nan = true;
+        else left_max = std::max(left_max, value);
+    }
+    for (std::uint32_t k = tree.node(root + 1).end; k < top.end; ++k) {
+        const float value = points[std::size_t(order[k]) * dims + split];
+        if (std::isnan(value)) continue;
+        CHECK_FALSE(left_nan); // a number right of a NaN: NaN did not sort last
+        CHECK(value >= left_max);
+    }
 }

@@ -1,62 +1,22 @@
-// The motion database in its file: what is written opens to the same records, and content that would send the
-// runtime out of bounds (indices, counts, string references, non-finite values) is refused with the section,
-// the record and the byte.
+// The motion database in its file: what is written opens to the same records; structure that would send the
+// runtime out of bounds (counts, clip and cluster ranges, string references) is refused at open, per-pose values
+// (pose records, non-finite numbers, MIR chains, cluster members) by verify; each refusal with the section, the
+// record and the byte.
 
 #include "kumite/formats/motion_database_file.h"
+#include "support/small_database.h"
 #include "support/test_paths.h"
 
 #include <catch2/catch.hpp>
 
 #include <cstring>
+#include <fstream>
 
 using namespace kumite;
 
 namespace {
 
-// Two clips (a 3-frame rest, a 4-frame right punch) of one actor, one cluster.
-MotionDatabaseContent small_database() {
-    MotionDatabaseContent db;
-    db.meta.frame_time_s = 1.0f / 30.0f;
-    db.meta.feature_stride = 3;
-    DbActor actor;
-    actor.name = db.add_string("bandai");
-    actor.leg_length_m = 0.8f;
-    actor.arm_length_m = 0.55f;
-    actor.height_m = 1.6f;
-    actor.ankle_height_m = 0.08f;
-    db.actors.push_back(actor);
-    for (int c = 0; c < 2; ++c) {
-        DbClip clip;
-        clip.name = db.add_string(c == 0 ? "guard" : "punch_r");
-        clip.semantics = db.add_string(c == 0 ? "rest" : "punch");
-        clip.source = db.add_string("bandai/x.bvh");
-        clip.first_pose = static_cast<std::uint32_t>(db.poses.size());
-        clip.frame_count = c == 0 ? 3 : 4;
-        if (c == 1) {
-            clip.flags = db_clip_strike;
-            clip.segment = static_cast<std::int32_t>(BodyPart::hand_r);
-            clip.side = static_cast<std::uint32_t>(Side::right);
-            clip.hit_frame = 2;
-        }
-        for (std::uint32_t f = 0; f < clip.frame_count; ++f) {
-            DbPose pose;
-            pose.clip = static_cast<std::uint32_t>(db.clips.size());
-            pose.frame = f;
-            pose.hit_point[1] = 1.2f + 0.1f * f;
-            db.poses.push_back(pose);
-            DbMirFrame frame;
-            frame.hip_centre[1] = 0.9f;
-            frame.part_frames[0][3] = 1.0f;
-            db.mir_frames.push_back(frame);
-            for (int d = 0; d < k_feature_dimensions; ++d) db.features.push_back(0.01f * d + f);
-        }
-        db.clips.push_back(clip);
-    }
-    db.centroids.assign(k_feature_dimensions, 0.5f);
-    db.clusters.push_back({0, 7, 1.0f, 0.0f});
-    for (std::uint32_t p = 0; p < 7; ++p) db.members.push_back(p);
-    return db;
-}
+using kumite::test::small_database;
 
 Result<MotionDatabase> open_bytes(const std::vector<std::byte>& bytes) {
     Result<DatabaseImage> image = DatabaseImage::view(bytes, "x.kdb");
@@ -64,9 +24,9 @@ Result<MotionDatabase> open_bytes(const std::vector<std::byte>& bytes) {
     return MotionDatabase::from_image(std::move(*image), "x.kdb");
 }
 
-// The error after `change` edits the written bytes of one record.
+// The written bytes of small_database() after `change` edits one record.
 template <class Record>
-std::string error_after(std::uint32_t tag, std::size_t index, void (*change)(Record&)) {
+std::vector<std::byte> bytes_after(std::uint32_t tag, std::size_t index, void (*change)(Record&)) {
     std::vector<std::byte> bytes = motion_database_bytes(small_database().view());
     Result<DatabaseImage> image = DatabaseImage::view(bytes, "x.kdb");
     REQUIRE(image.has_value());
@@ -75,9 +35,29 @@ std::string error_after(std::uint32_t tag, std::size_t index, void (*change)(Rec
     std::memcpy(&record, bytes.data() + offset, sizeof(Record));
     change(record);
     std::memcpy(bytes.data() + offset, &record, sizeof(Record));
-    Result<MotionDatabase> opened = open_bytes(bytes);
+    return bytes;
+}
+
+// The error opening gives after `change` (structure: refused at open).
+template <class Record>
+std::string error_after(std::uint32_t tag, std::size_t index, void (*change)(Record&)) {
+    Result<MotionDatabase> opened = open_bytes(bytes_after(tag, index, change));
     REQUIRE_FALSE(opened.has_value());
     return opened.error().message;
+}
+
+// The error verifying gives after `change` (a per-pose value: opening accepts it, verify_values refuses it).
+template <class Record>
+std::string verify_error_after(std::uint32_t tag, std::size_t index, void (*change)(Record&)) {
+    const std::vector<std::byte> bytes = bytes_after(tag, index, change);
+    Result<MotionDatabase> opened = open_bytes(bytes);
+    REQUIRE(opened.has_value());
+    Result<void> verified = opened->verify_values();
+    REQUIRE_FALSE(verified.has_value());
+    Result<void> verified_with_hash = opened->verify(); // values first: the message says which value, not "hash"
+    REQUIRE_FALSE(verified_with_hash.has_value());
+    CHECK(verified_with_hash.error().message == verified.error().message);
+    return verified.error().message;
 }
 
 } // namespace
@@ -137,7 +117,7 @@ TEST_CASE("motion_database_file: a MIR frame survives storage to float precision
     CHECK(loaded.swivel[3] == Approx(-0.4));
 }
 
-TEST_CASE("motion_database_file: content that points out of bounds is refused with section, record and byte", "[formats][database]") {
+TEST_CASE("motion_database_file: structure that points out of bounds is refused at open with section, record and byte", "[formats][database]") {
     const std::string actor = error_after<DbClip>(k_section_clips, 1, [](DbClip& c) { c.actor = 5; });
     CHECK_THAT(actor, Catch::Contains("x.kdb: byte ") && Catch::Contains("CLIP 1") && Catch::Contains("actor 5 is out of range"));
     CHECK_THAT(error_after<DbClip>(k_section_clips, 0, [](DbClip& c) { c.frame_count = 1000000; }), Catch::Contains("CLIP 0"));
@@ -145,15 +125,51 @@ TEST_CASE("motion_database_file: content that points out of bounds is refused wi
                Catch::Contains("outside the string table"));
     CHECK_THAT(error_after<DbClip>(k_section_clips, 1, [](DbClip& c) { c.hit_frame = 4; }), Catch::Contains("hit frame 4"));
     CHECK_THAT(error_after<DbClip>(k_section_clips, 1, [](DbClip& c) { c.segment = 40; }), Catch::Contains("not a body part"));
-    CHECK_THAT(error_after<DbPose>(k_section_poses, 4, [](DbPose& p) { p.clip = 0; }), Catch::Contains("POSE 4"));
-    CHECK_THAT(error_after<DbPose>(k_section_poses, 2, [](DbPose& p) { p.hit_point[0] = std::numeric_limits<float>::quiet_NaN(); }),
-               Catch::Contains("not finite"));
-    CHECK_THAT(error_after<DbMirFrame>(k_section_mir_frames, 6, [](DbMirFrame& f) { f.spine_count = 13; }), Catch::Contains("MIRF 6"));
-    CHECK_THAT(error_after<DbMirFrame>(k_section_mir_frames, 0, [](DbMirFrame& f) { f.swivel[1] = INFINITY; }), Catch::Contains("MIRF 0"));
-    CHECK_THAT(error_after<std::uint32_t>(k_section_members, 3, [](std::uint32_t& m) { m = 70; }), Catch::Contains("MEMB 3"));
-    CHECK_THAT(error_after<float>(k_section_features, 10, [](float& v) { v = NAN; }), Catch::Contains("FEAT 10"));
+    CHECK_THAT(error_after<DbClip>(k_section_clips, 0, [](DbClip& c) { c.box_max[1] = NAN; }), Catch::Contains("CLIP 0") && Catch::Contains("box"));
+    CHECK_THAT(error_after<DbActor>(k_section_actors, 0, [](DbActor& a) { a.leg_length_m = 0.0f; }), Catch::Contains("ACTR 0"));
     CHECK_THAT(error_after<DbCluster>(k_section_clusters, 0, [](DbCluster& c) { c.member_count = 9; }), Catch::Contains("CLUS 0"));
+    CHECK_THAT(error_after<float>(k_section_centroids, 7, [](float& v) { v = INFINITY; }), Catch::Contains("CENT 7"));
     CHECK_THAT(error_after<DbMeta>(k_section_meta, 0, [](DbMeta& m) { m.feature_dimensions = 3; }), Catch::Contains("META 0"));
+}
+
+TEST_CASE("motion_database_file: per-pose values are refused by verify with section, record and byte", "[formats][database]") {
+    const std::string pose = verify_error_after<DbPose>(k_section_poses, 4, [](DbPose& p) { p.clip = 0; });
+    CHECK_THAT(pose, Catch::Contains("x.kdb: byte ") && Catch::Contains("POSE 4") && Catch::Contains("do not match the clip table"));
+    CHECK_THAT(verify_error_after<DbPose>(k_section_poses, 5, [](DbPose& p) { p.frame = 7; }), Catch::Contains("POSE 5"));
+    CHECK_THAT(verify_error_after<DbPose>(k_section_poses, 2, [](DbPose& p) { p.hit_point[0] = std::numeric_limits<float>::quiet_NaN(); }),
+               Catch::Contains("POSE 2") && Catch::Contains("not finite"));
+    CHECK_THAT(verify_error_after<DbMirFrame>(k_section_mir_frames, 6, [](DbMirFrame& f) { f.spine_count = 13; }), Catch::Contains("MIRF 6"));
+    CHECK_THAT(verify_error_after<DbMirFrame>(k_section_mir_frames, 0, [](DbMirFrame& f) { f.swivel[1] = INFINITY; }), Catch::Contains("MIRF 0"));
+    CHECK_THAT(verify_error_after<DbMirFrame>(k_section_mir_frames, 3, [](DbMirFrame& f) { f.neck_fractions[2] = NAN; }), Catch::Contains("MIRF 3"));
+    CHECK_THAT(verify_error_after<std::uint32_t>(k_section_members, 3, [](std::uint32_t& m) { m = 70; }),
+               Catch::Contains("MEMB 3") && Catch::Contains("pose 70 is out of range"));
+    CHECK_THAT(verify_error_after<std::uint32_t>(k_section_members, 5, [](std::uint32_t& m) { m = 1; }),
+               Catch::Contains("MEMB 5") && Catch::Contains("pose 1 is a member twice"));
+    const std::string feature = verify_error_after<float>(k_section_features, 10, [](float& v) { v = NAN; });
+    CHECK_THAT(feature, Catch::Contains("FEAT 10") && Catch::Contains("not a finite number"));
+    const std::string late_feature = verify_error_after<float>(k_section_features, 6 * k_feature_dimensions + 119, [](float& v) { v = -INFINITY; });
+    CHECK_THAT(late_feature, Catch::Contains("FEAT " + std::to_string(6 * k_feature_dimensions + 119)));
+
+    // The unchanged database verifies; a flipped byte the values do not show is the hash's to find.
+    std::vector<std::byte> bytes = motion_database_bytes(small_database().view());
+    REQUIRE(open_bytes(bytes)->verify().has_value());
+    Result<DatabaseImage> image = DatabaseImage::view(bytes, "x.kdb");
+    bytes[image->find(k_section_features)->offset + 1] ^= std::byte{0x01}; // a mantissa bit: still finite
+    Result<MotionDatabase> flipped = open_bytes(bytes);
+    REQUIRE(flipped.has_value());
+    CHECK(flipped->verify_values().has_value());
+    REQUIRE_FALSE(flipped->verify().has_value());
+    CHECK_THAT(flipped->verify().error().message, Catch::Contains("byte 24") && Catch::Contains("content hash"));
+}
+
+TEST_CASE("motion_database_file: open(path, verify) refuses a per-pose value that open alone accepts", "[formats][database]") {
+    const std::filesystem::path path = kumite::test::make_temp_dir("kdb-verify") / "nan.kdb";
+    const std::vector<std::byte> bytes = bytes_after<float>(k_section_features, 10, [](float& v) { v = NAN; });
+    std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+    REQUIRE(MotionDatabase::open(path).has_value());
+    Result<MotionDatabase> verified = MotionDatabase::open(path, /*verify=*/true);
+    REQUIRE_FALSE(verified.has_value());
+    CHECK_THAT(verified.error().message, Catch::Contains(path.string()) && Catch::Contains("FEAT 10"));
 }
 
 TEST_CASE("motion_database_file: a container without the motion sections is not a motion database", "[formats][database]") {

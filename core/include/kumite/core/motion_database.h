@@ -2,7 +2,9 @@
 // The baked motion database as the runtime sees it: fixed-size records in spans, over a mapped `.kdb` file or
 // over the vectors a bake fills. Records hold only 32-bit floats and integers (little-endian on disk), indices
 // into other spans and string references into one table; no pointers. formats/motion_database_file.h writes and
-// opens the file and checks every index before a view is handed out. Layout byte by byte: formats/README.md.
+// opens the file: opening checks the structure (every span size, string reference, actor index, clip pose range and
+// cluster member range), verify() the per-pose values (a pose record's clip and frame, members, finite floats), which
+// readers of an unverified view bound where they use them. Layout byte by byte: formats/README.md.
 //
 // Lengths are the actor's metres (each clip's actor is recorded with its sizes) except where a name says
 // `normalised` (divided by the actor's leg length). "Clip world" is the capture's world with its floor moved to
@@ -125,7 +127,9 @@ struct DbCluster {
     float reserved = 0.0f;
 };
 
-// A view of a whole database. Spans index each other; formats' opener has checked that every index is in range.
+// A view of a whole database. Spans index each other. Opened from a file, the clip table's and cluster table's
+// indices are in range; a pose record's clip and frame and the members are in range only once verified: take a
+// pose's clip from the clip table (clips tile the poses) and bound a member before following it.
 struct MotionDatabaseView {
     DbMeta meta;
     std::span<const char> strings;

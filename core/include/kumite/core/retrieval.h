@@ -170,6 +170,7 @@ private:
     struct PoseInfo {
         float distance_to_centroid = 0.0f; // sqrt(Kovar / points), leg lengths
         float heading_cos = 1.0f, heading_sin = 0.0f;
+        std::uint32_t clip = 0; // from the clip table, which the opener checked (not the pose record's, a value it did not)
     };
     // A group is the candidate starts of one order key (semantics, side, arm or leg strike, kind, height), or of one
     // cluster for one order key: m_candidates[m_group_begin[g] .. m_group_begin[g + 1]), g = cluster * m_order_keys +

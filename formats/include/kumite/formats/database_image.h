@@ -53,13 +53,18 @@ private:
     std::vector<Pending> m_sections;
 };
 
-// A mapped, validated image. Sections point into the mapping, which lives as long as the view.
+// A mapped, validated image. Sections point into the mapping, which lives as long as the view. Opening reads the
+// header and the section table only (no section's bytes), so it takes the same time for any file size.
 class DatabaseImage {
 public:
     static Result<DatabaseImage> open(const std::filesystem::path& path, bool verify_hash = false);
     // Validates bytes already in memory (the caller keeps them alive); `source_name` prefixes errors.
     static Result<DatabaseImage> view(std::span<const std::byte> bytes, std::string_view source_name, bool verify_hash = false);
 
+    // Rehashes every byte after the header against the header's content hash: O(file size).
+    Result<void> verify_hash() const;
+
+    const std::string& source_name() const { return m_source_name; }
     std::uint32_t format_version() const { return m_format_version; }
     std::uint64_t byte_size() const { return m_bytes.size(); }
     std::uint64_t content_hash() const { return m_content_hash; }
@@ -69,6 +74,7 @@ public:
 private:
     std::shared_ptr<void> m_mapping; // unmaps when the last copy goes
     std::span<const std::byte> m_bytes;
+    std::string m_source_name;
     std::uint32_t m_format_version = 0;
     std::uint64_t m_content_hash = 0;
     std::vector<DatabaseSection> m_sections;
