@@ -81,7 +81,9 @@ BlockClips::BlockClips(const MotionDatabaseView& database) : m_db(database) {
 
 BlockClips::ArmFrame BlockClips::arm_frame(int clip, double frame, int limb, int parent_part) const {
     const DbClip& record = m_db.clips[clip];
-    const double clamped = std::clamp(frame, 0.0, double(record.frame_count - 1));
+    // A frame from an unverified database's values may be NaN (motion_database.h): the first frame then, never a
+    // cast of NaN to an index.
+    const double clamped = std::isfinite(frame) ? std::clamp(frame, 0.0, double(record.frame_count - 1)) : 0.0;
     const int f0 = static_cast<int>(std::floor(clamped)), f1 = std::min(f0 + 1, int(record.frame_count) - 1);
     const double t = clamped - f0;
     const DbMirFrame& a = m_db.mir_frames[record.first_pose + f0];
