@@ -49,7 +49,12 @@ void query_every_semantics(const kumite::MotionDatabaseView& db) {
             if (!result.found) continue;
             if (result.clip < 0 || std::size_t(result.clip) >= db.clips.size()) std::abort();
             const kumite::DbClip& found = db.clips[static_cast<std::size_t>(result.clip)];
-            if (result.start_frame < 0 || std::uint32_t(result.start_frame) >= found.frame_count || result.contact_frame != found.hit_frame) std::abort();
+            // The contact: where the hit point has covered the retriever's share of its way to the hit, at or before it.
+            if (result.start_frame < 0 || std::uint32_t(result.start_frame) >= found.frame_count || result.contact_frame < 0 ||
+                result.contact_frame > found.hit_frame ||
+                result.contact_frame != kumite::db_clip_contact_frame(db, found, retriever.settings().contact_extension)) {
+                std::abort();
+            }
         }
     }
 }
