@@ -1,5 +1,7 @@
 #include "kumite/core/motion_database.h"
 
+#include "kumite/core/strike_adaptation.h"
+
 #include <cassert>
 
 namespace kumite {
@@ -81,7 +83,7 @@ int db_first_clip_of(const MotionDatabaseView& db, std::string_view semantics) {
     return -1;
 }
 
-int db_clip_contact_frame(const MotionDatabaseView& db, const DbClip& clip, double extension) {
+int db_clip_contact_frame(const MotionDatabaseView& db, const DbClip& clip, double extension, double speed_share) {
     if (!db_clip_is_strike(clip) || clip.hit_frame < 0) return -1;
     if (extension >= 1.0) return clip.hit_frame;
     auto hit_point = [&](int frame) {
@@ -95,10 +97,27 @@ int db_clip_contact_frame(const MotionDatabaseView& db, const DbClip& clip, doub
         const double distance = (hit_point(f) - at_hit).norm();
         if (distance > farthest) farthest = distance, farthest_frame = f;
     }
+    int contact = clip.hit_frame;
     for (int f = farthest_frame; f <= clip.hit_frame; ++f) {
-        if ((hit_point(f) - at_hit).norm() <= (1.0 - extension) * farthest) return f;
+        if ((hit_point(f) - at_hit).norm() <= (1.0 - extension) * farthest) {
+            contact = f;
+            break;
+        }
     }
-    return clip.hit_frame;
+    const bool strikes_with_middle = clip.segment >= 0 && clip.segment < k_body_part_count && segment_strikes_with_middle(static_cast<BodyPart>(clip.segment));
+    if (speed_share > 0.0 && contact > farthest_frame && !strikes_with_middle) {
+        // The step into each frame (per frame: the rate is the clip's), its fastest on the way from the farthest.
+        auto step = [&](int f) { return (hit_point(f) - hit_point(f - 1)).norm(); };
+        int fastest_frame = farthest_frame + 1;
+        for (int f = farthest_frame + 1; f <= contact; ++f) {
+            if (step(f) > step(fastest_frame)) fastest_frame = f;
+        }
+        const double fast = speed_share * step(fastest_frame);
+        for (int f = fastest_frame + 1; f <= contact; ++f) {
+            if (step(f) < fast) return f - 1;
+        }
+    }
+    return contact;
 }
 
 void db_mir_frame_load(MirFrame& out, const DbMirFrame& stored) {

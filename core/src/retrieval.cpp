@@ -48,7 +48,7 @@ Retriever::Retriever(const MotionDatabaseView& database, RetrievalSettings setti
         info.first_start = info.end_start = static_cast<int>(clip.first_pose);
         // Starts lead the contact by min_lead_frames; a strike whose whole wind-up is shorter (a snap elbow from
         // guard) starts at its first frame, never mid-flight.
-        info.contact_frame = db_clip_contact_frame(m_db, clip, m_settings.contact_extension);
+        info.contact_frame = db_clip_contact_frame(m_db, clip, m_settings.contact_extension, m_settings.contact_speed_share);
         if (db_clip_is_strike(clip)) info.end_start += std::max(1, info.contact_frame - m_settings.min_lead_frames + 1);
         const DbActor& actor = m_db.actors[clip.actor];
         info.actor_leg_length = actor.leg_length_m;

@@ -43,7 +43,7 @@ StrikeRun run_strike(const MotionDatabaseView& db, const Retriever& retriever, c
     adapter.set_impact(impact);
     run.contact = adapter.contact_index();
     // The contact: where the hit point has covered 90% of its way to the annotated hit, still travelling (issue 44).
-    CHECK(found.contact_frame == db_clip_contact_frame(db, db.clips[found.clip], 0.9));
+    CHECK(found.contact_frame == db_clip_contact_frame(db, db.clips[found.clip], 0.9, RetrievalSettings{}.contact_speed_share));
     CHECK(found.contact_frame <= int(db.clips[found.clip].hit_frame));
     std::vector<Eigen::Vector3d> path;
     Eigen::Vector3d root_at_contact = Eigen::Vector3d::Zero();

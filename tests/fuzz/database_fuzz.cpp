@@ -52,7 +52,7 @@ void query_every_semantics(const kumite::MotionDatabaseView& db) {
             // The contact: where the hit point has covered the retriever's share of its way to the hit, at or before it.
             if (result.start_frame < 0 || std::uint32_t(result.start_frame) >= found.frame_count || result.contact_frame < 0 ||
                 result.contact_frame > found.hit_frame ||
-                result.contact_frame != kumite::db_clip_contact_frame(db, found, retriever.settings().contact_extension)) {
+                result.contact_frame != kumite::db_clip_contact_frame(db, found, retriever.settings().contact_extension, retriever.settings().contact_speed_share)) {
                 std::abort();
             }
         }

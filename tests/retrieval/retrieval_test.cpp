@@ -14,7 +14,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <thread>
+#include <vector>
 
 using namespace kumite;
 
@@ -61,7 +63,7 @@ TEST_CASE("retrieval: orders are obeyed for every character", "[retrieval][corpu
             // At least the lead before the contact, or the clip's very first frame when its wind-up is shorter.
             CHECK((result.start_frame + retriever.settings().min_lead_frames <= result.contact_frame || result.start_frame == 0));
             // The strike lands where its limb still travels, at or a little before its own annotated hit.
-            CHECK(result.contact_frame == db_clip_contact_frame(db, clip, retriever.settings().contact_extension));
+            CHECK(result.contact_frame == db_clip_contact_frame(db, clip, retriever.settings().contact_extension, retriever.settings().contact_speed_share));
             CHECK(result.contact_frame <= clip.hit_frame);
             CHECK(result.time_to_contact_s >= 0.0);
         }
@@ -96,7 +98,7 @@ TEST_CASE("retrieval: the contact is where the hit point has covered 90% of its 
             REQUIRE(high.found);
             REQUIRE(low.found);
             // The target term is the distance from the target to the hit point at the contact frame.
-            CHECK(high.contact_frame == db_clip_contact_frame(db, db.clips[high.clip], 0.9));
+            CHECK(high.contact_frame == db_clip_contact_frame(db, db.clips[high.clip], 0.9, RetrievalSettings{}.contact_speed_share));
             CHECK(high.d_target_m == Approx((high.contact_point_world - Eigen::Vector3d(0.0, high_y, 0.6)).norm()).margin(1e-6));
             CHECK(low.d_target_m == Approx((low.contact_point_world - Eigen::Vector3d(0.0, low_y, 0.6)).norm()).margin(1e-6));
             CHECK(high.contact_point_world.y() >= low.contact_point_world.y() - 1e-9);
@@ -110,6 +112,36 @@ TEST_CASE("retrieval: the contact is where the hit point has covered 90% of its 
             CHECK(by_target.query(query, workspace).d_target_m == Approx(nearest.d_target_m).margin(1e-9));
         }
     }
+}
+
+TEST_CASE("retrieval: with a speed share the contact comes before the hit point slows, at its speed", "[retrieval][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    if (!content) return;
+    const MotionDatabaseView db = content->view();
+    int strikes = 0, earlier = 0;
+    std::vector<double> speed_share_at_contact;
+    for (const DbClip& clip : db.clips) {
+        if (!db_clip_is_strike(clip) || clip.hit_frame < 0) continue;
+        ++strikes;
+        const int by_extension = db_clip_contact_frame(db, clip, 0.9);
+        const int contact = db_clip_contact_frame(db, clip, 0.9, 0.85);
+        CHECK(contact >= 0);
+        CHECK(contact <= by_extension); // never later than by extension alone
+        earlier += contact < by_extension;
+        auto point = [&](int f) {
+            const float* p = db.poses[clip.first_pose + f].hit_point;
+            return Eigen::Vector3d(p[0], p[1], p[2]);
+        };
+        // The step into the contact against the fastest step from the start to it.
+        double fastest = 0.0;
+        for (int f = 1; f <= contact; ++f) fastest = std::max(fastest, (point(f) - point(f - 1)).norm());
+        if (contact > 0 && fastest > 0.0) speed_share_at_contact.push_back((point(contact) - point(contact - 1)).norm() / fastest);
+    }
+    REQUIRE(strikes > 100);
+    CHECK(earlier > strikes / 4); // the punches that decelerate before nine tenths of their way
+    std::sort(speed_share_at_contact.begin(), speed_share_at_contact.end());
+    // Most strikes meet their target at (nearly) their top speed; a few wind up faster than they strike.
+    CHECK(speed_share_at_contact[speed_share_at_contact.size() / 2] >= 0.85);
 }
 
 TEST_CASE("retrieval: a contact frame between the travel's farthest point and the hit, the hit itself at full extension", "[retrieval][corpus]") {

@@ -185,8 +185,12 @@ bool db_clip_is_arm_strike(const DbClip& clip);
 std::uint32_t db_clip_support_foot(const DbClip& clip);
 // Where a strike makes contact (issue 44: strikes that hit): the first frame, from the farthest its hit point is
 // from the annotated hit, where it has covered `extension` of that way (0.9: the limb still travels fast there; the
-// hit is annotated at full extension, where it has stopped). 1 or more: the hit frame itself. -1 for non-strikes.
-int db_clip_contact_frame(const MotionDatabaseView& db, const DbClip& clip, double extension);
+// hit is annotated at full extension, where it has stopped). 1 or more: the hit frame itself. With `speed_share` > 0,
+// earlier still when the hit point slows before that: the last frame, after its fastest on the way, before it
+// first moves slower than `speed_share` of that fastest (a punch that decelerates early meets its target while it
+// still travels at speed; a knee or elbow, whose joint carries the body behind it, by extension only). -1 for
+// non-strikes.
+int db_clip_contact_frame(const MotionDatabaseView& db, const DbClip& clip, double extension, double speed_share = 0.0);
 // The last frame of a leg strike, up to its hit, where its support foot is planted; -1 when it never is.
 int db_clip_support_down_until(const MotionDatabaseView& db, const DbClip& clip);
 

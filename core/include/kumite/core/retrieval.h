@@ -13,8 +13,8 @@
 // scaled by size_character / size_actor (the paper's c_r = c * size_actor / size_character, applied to the point
 // instead of the target so that distances are the character's). The paper's contact is the annotated hit, at full
 // extension where the limb has stopped: a strike adapted there touches its target. Here the contact is a little
-// earlier, where the hit point has covered `contact_extension` (0.9) of its way to the hit and still travels fast
-// (issue 44): the strike arrives at speed and the impact stops it (the paper's d(t_c) = X - M(t_c) at that t_c),
+// earlier, where the hit point has covered `contact_extension` (0.9) of its way to the hit, or before it first slows
+// under `contact_speed_share` (0.85) of its fastest on the way: it still travels fast (issue 44): the strike arrives at speed and the impact stops it (the paper's d(t_c) = X - M(t_c) at that t_c),
 // with the clip's own timing from the start to it.
 //
 // Search. Candidates are grouped by cluster and order, and each group is a k-d tree (box_tree.h) over two cheap
@@ -58,6 +58,9 @@ struct RetrievalSettings {
     // The contact: the first frame where the hit point has covered this share of its way to the annotated hit
     // (db_clip_contact_frame), where the limb still travels fast; 1: the annotated hit (full extension, stopped).
     double contact_extension = 0.9;
+    // ... or earlier, the last frame before the hit point first slows under this share of its fastest on the way
+    // (db_clip_contact_frame): a strike meets its target at speed, not as it stops. 0: by extension alone.
+    double contact_speed_share = 0.85;
     // One tree per order (semantics, side, limb) over every cluster's candidates, or one per cluster and order
     // with the triangle inequality through the centroid as one more bound. One tree per order won at 220,000 poses
     // (fewer nodes visited: the upper levels are shared; tests/bench/retrieval_bench.cpp reports both).
