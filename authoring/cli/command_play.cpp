@@ -36,7 +36,7 @@ const CommandSpec& play_spec() {
         "play",
         "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:HEAD[,LEFT,RIGHT]] | replay:FILE | simulate:KIND|FILE] "
         "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] "
-        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
+        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--human-speed] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
         "Runs the fighter at 60 Hz against the user's head and hands (a DTrack system, a replayed CSV, or a\n"
         "simulated user) and the supervisor's commands, one per line: punch [left|right] [straight|hook|uppercut]\n"
         "[low|middle|high], kick [left|right] [front|roundhouse|side] [low|middle|high], slash [left|right] [low|middle|high],\n"
@@ -64,9 +64,13 @@ const CommandSpec& play_spec() {
          {"lead", "S", "the least time from an order's strike start to its contact (default 0.4 s)"},
          {"contact-extension", "SHARE", "strikes make contact where the hit point has covered SHARE of its way to the annotated hit, still\n"
                                         "travelling (default 0.9; 1: at the annotated hit, full extension, the paper's contact)"},
+         {"contact-speed-share", "SHARE", "... or earlier, before the hit point first slows under SHARE of its top speed on the way (default 0.85;\n"
+                                          "0: by extension alone)"},
          {"plans-per-frame", "N", "at most N fighters plan a strike in one frame, the others on the next frames, oldest order first (default 14; 0: no limit)"},
          {"steer-until", "S", "predicted aim: the strike follows the head until S before its contact (default 0.15 s; 0: never steers)"},
          {"variety", "N", "prefer a clip not used in the last N strikes when one scores within 0.15 of the best (default 6, 0: always the best)"},
+         {"human-speed", "", "no joint of the fighter moves faster than the library's fastest for its kind of move (wrists and ankles\n"
+                             "never over 12 m/s): a move that asks for more is shown lagging (the report's motion.by_move held_back_frames)"},
          {"no-defence", "", "the fighter does not block or slip the user's strikes (also the command 'defence on|off', the viewer's D key)"},
          {"captured-blocks", "", "block punches with the database's captured blocks when one fits: rising at the head, rising or downward at\n"
                                  "the chest (events: move block_clip); else the block is synthesized from the guard"},
@@ -106,6 +110,8 @@ int run_play(int argc, char** argv) {
     if (!lead_s) return usage_error(play_spec(), lead_s.error().message);
     const Result<double> contact_extension = arguments.number("contact-extension", 0.5, 1.0, RetrievalSettings{}.contact_extension, "");
     if (!contact_extension) return usage_error(play_spec(), contact_extension.error().message);
+    const Result<double> contact_speed_share = arguments.number("contact-speed-share", 0.0, 1.0, RetrievalSettings{}.contact_speed_share, "");
+    if (!contact_speed_share) return usage_error(play_spec(), contact_speed_share.error().message);
     const Result<double> steer_until_s = arguments.number("steer-until", 0.0, 5.0, FighterSettings{}.steer_until_s, "seconds");
     if (!steer_until_s) return usage_error(play_spec(), steer_until_s.error().message);
     const Result<double> block_speed_limit = arguments.number("block-speed-limit", 0.0, 100.0, 0.0, "times the clip's speed");
@@ -181,10 +187,12 @@ int run_play(int argc, char** argv) {
     options.fighters = static_cast<int>(*fighters_count);
     options.lead_s = *lead_s;
     options.contact_extension = *contact_extension;
+    options.contact_speed_share = *contact_speed_share;
     options.fighter.steer_until_s = *steer_until_s;
     options.plans_per_frame = static_cast<int>(*plans_per_frame);
     options.fighter.aim = aim;
     options.fighter.defence.enabled = !arguments.has("no-defence");
+    options.fighter.human_speed = arguments.has("human-speed");
     options.fighter.defence.captured_blocks = arguments.has("captured-blocks");
     options.fighter.defence.block_clip_max_speed_ratio = *block_speed_limit;
     options.fighter.variety_recent = static_cast<int>(*variety);

@@ -25,14 +25,16 @@ nlohmann::json play_motion_json(const Bout& bout) {
         if (frames == 0) continue;
         nlohmann::json entry = speeds_json(meter.fastest()[std::size_t(k)]);
         entry["frames"] = frames;
-        // Hold has no clips of its own: measured against the guard's (rest) clips; a recovery (a strike's end blended
-        // back into the guard) against the fastest strike's.
-        JointSpeeds bar = library[std::size_t(k == int(MoveKind::hold) ? int(MoveKind::guard) : k)];
-        if (k == int(MoveKind::recover)) {
-            for (const MoveKind strike : {MoveKind::punch, MoveKind::kick, MoveKind::knee, MoveKind::elbow}) bar.keep_fastest(library[std::size_t(strike)]);
-        }
+        entry["fastest_wrist_at_s"] = meter.peak_times()[std::size_t(k)].wrist_at_s;
+        entry["fastest_ankle_at_s"] = meter.peak_times()[std::size_t(k)].ankle_at_s;
+        // The bar the fighter's speed limit holds the kind to (speed_bar: a hold against the guard's clips, a recovery
+        // against the fastest strike's, wrists and ankles never above the human limit).
+        const JointSpeeds bar = speed_bar(library, MoveKind(k));
         entry["library"] = speeds_json(bar);
         entry["over_library"] = ratios_json(meter.fastest()[std::size_t(k)], bar);
+        long long held = 0;
+        for (int f = 0; f < bout.fighter_count(); ++f) held += bout.fighter(f).held_back_frames()[std::size_t(k)];
+        entry["held_back_frames"] = held; // the speed limit showed the pose short of the one asked for
         by_move[move_kind_name(MoveKind(k))] = entry;
     }
     nlohmann::json library_by_move = nlohmann::json::object();
@@ -49,7 +51,10 @@ nlohmann::json play_motion_json(const Bout& bout) {
             contact[move_kind_name(MoveKind(int(MoveKind::punch) + k))] = {{"median", speeds.quantile(0.5)}, {"max", speeds.max()}, {"count", speeds.count()}};
         }
     }
+    double lag_m = 0.0;
+    for (int f = 0; f < bout.fighter_count(); ++f) lag_m = std::max(lag_m, bout.fighter(f).held_back_lag_m());
     return {{"by_move", by_move},
+            {"held_back_lag_max_m", lag_m},
             {"speed_at_contact_by_kind_mps", contact},
             {"fastest", speeds_json(meter.fastest_overall())},
             {"library", library_by_move},

@@ -46,12 +46,14 @@ Result<std::unique_ptr<Bout>> Bout::create(const MotionDatabaseView& database, s
     RetrievalSettings retrieval_settings;
     retrieval_settings.min_lead_frames = std::max(1, int(std::lround(options.lead_s / database.meta.frame_time_s)));
     retrieval_settings.contact_extension = options.contact_extension;
+    retrieval_settings.contact_speed_share = options.contact_speed_share;
     bout->m_retriever = std::make_unique<Retriever>(database, retrieval_settings);
+    const std::shared_ptr<const LibrarySpeeds> library_speeds = measure_library_speeds(database, rigs); // once for every fighter
     for (int i = 0; i < options.fighters; ++i) {
         FighterSettings settings = options.fighter;
         settings.rate_hz = options.rate_hz;
         settings.start_x_m = (double(i) - 0.5 * double(options.fighters - 1)) * 1.2;
-        bout->m_fighters.push_back(std::make_unique<Fighter>(database, *bout->m_retriever, rigs, settings));
+        bout->m_fighters.push_back(std::make_unique<Fighter>(database, *bout->m_retriever, rigs, settings, library_speeds));
     }
     bout->m_events.reserve(std::size_t(options.fighters) * 64);
     bout->m_order_frame.assign(std::size_t(options.fighters), -1);

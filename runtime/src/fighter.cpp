@@ -5,10 +5,13 @@
 #include "fighter/fighter_parts.h"
 #include "fighter/strike_aim.h"
 
+#include "kumite/runtime/motion_meter.h"
+
 namespace kumite {
 
-Fighter::Fighter(const MotionDatabaseView& database, const Retriever& retriever, std::vector<CharacterRig*> characters, FighterSettings settings)
-    : m_settings(settings), m_parts(std::make_unique<Parts>(database, retriever, characters, settings)) {}
+Fighter::Fighter(const MotionDatabaseView& database, const Retriever& retriever, std::vector<CharacterRig*> characters, FighterSettings settings,
+                 std::shared_ptr<const LibrarySpeeds> library_speeds)
+    : m_settings(settings), m_parts(std::make_unique<Parts>(database, retriever, characters, settings, std::move(library_speeds))) {}
 
 Fighter::~Fighter() = default;
 
@@ -79,9 +82,10 @@ void Fighter::plan(double t_s) {
 
 void Fighter::play_strike(double t_s) {
     Parts& p = *m_parts;
-    p.strike.play(t_s, p.body, p.user, p.log);
+    p.strike.play(t_s, p.body, p.user);
     p.defence.apply(t_s, true, p.player.pins(), p.body); // a block with the free arm
-    p.body.update_heading();
+    show(t_s);
+    p.strike.measure(t_s, p.body, p.user, p.log); // the contact as shown
     if (!p.strike.over()) return;
     p.strike.end(t_s, p.log);
     enter(FighterState::recover, t_s);
@@ -96,7 +100,7 @@ void Fighter::move(double t_s) {
         }
         if (t_s - m_state_since_s < m_settings.hold_s) { // hold the last pose
             p.body.decode(p.body.mir());
-            p.body.update_heading();
+            show(t_s);
             return;
         }
     } else if (m_state == FighterState::recover && t_s - m_state_since_s >= m_settings.recover_s) {
@@ -116,6 +120,12 @@ void Fighter::move(double t_s) {
     }
     p.player.play(t_s, p.body, m_settings.blend_s);
     p.defence.apply(t_s, false, p.player.pins(), p.body);
+    show(t_s);
+}
+
+void Fighter::show(double t_s) {
+    Parts& p = *m_parts;
+    if (m_settings.human_speed) p.speed_limit.apply(t_s, MotionMeter::move_kind(*this, p.db), p.body);
     p.body.update_heading();
 }
 
@@ -170,6 +180,8 @@ double Fighter::order_since_s() const { return m_parts->orders.has_pending() ? m
 void Fighter::set_may_plan(bool may_plan, int parts) { m_parts->planner.set_budget(may_plan, parts); }
 bool Fighter::may_plan() const { return m_parts->planner.may_plan(); }
 int Fighter::character() const { return m_parts->body.index(); }
+const std::array<long long, k_move_kind_count>& Fighter::held_back_frames() const { return m_parts->speed_limit.held_frames(); }
+double Fighter::held_back_lag_m() const { return m_parts->speed_limit.largest_lag_m(); }
 const Pose& Fighter::pose() const { return m_parts->body.pose(); }
 const MirFrame& Fighter::mir() const { return m_parts->defence.shown() ? m_parts->defence.shown_mir() : m_parts->body.mir(); }
 std::span<const Eigen::Vector3d> Fighter::positions() const { return m_parts->body.positions(); }

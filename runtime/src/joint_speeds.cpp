@@ -72,6 +72,28 @@ JointSpeeds joint_speeds(const LimbSample& before, const LimbSample& after, doub
     return speeds;
 }
 
+JointSpeeds speed_bar(const std::array<JointSpeeds, k_move_kind_count>& library, MoveKind kind) {
+    JointSpeeds strikes;
+    for (const MoveKind strike : {MoveKind::punch, MoveKind::kick, MoveKind::knee, MoveKind::elbow}) strikes.keep_fastest(library[int(strike)]);
+    JointSpeeds bar;
+    switch (kind) {
+    case MoveKind::hold: bar = library[int(MoveKind::guard)]; break;
+    case MoveKind::recover: bar = strikes; break;
+    default: bar = library[int(kind)]; break;
+    }
+    if (bar.wrist_mps <= 0.0 && bar.ankle_mps <= 0.0) bar = kind == MoveKind::slip ? library[int(MoveKind::block)] : strikes;
+    if (bar.wrist_mps <= 0.0 && bar.ankle_mps <= 0.0) bar = strikes;
+    bar.wrist_mps = bar.wrist_mps > 0.0 ? std::min(bar.wrist_mps, k_human_extremity_mps) : k_human_extremity_mps;
+    bar.ankle_mps = bar.ankle_mps > 0.0 ? std::min(bar.ankle_mps, k_human_extremity_mps) : k_human_extremity_mps;
+    return bar;
+}
+
+std::shared_ptr<const LibrarySpeeds> measure_library_speeds(const MotionDatabaseView& db, const std::vector<CharacterRig*>& characters) {
+    auto speeds = std::make_shared<LibrarySpeeds>();
+    for (const CharacterRig* character : characters) speeds->per_character.push_back(library_joint_speeds(db, character->skeleton(), character->anatomy()));
+    return speeds;
+}
+
 bool clip_move_kind(const MotionDatabaseView& db, int clip, MoveKind& kind) {
     const DbClip& c = db.clips[clip];
     const std::string_view semantics = db.string(c.semantics);

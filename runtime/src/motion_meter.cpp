@@ -28,7 +28,11 @@ void MotionMeter::measure(int fighter_index, double t_s, const Fighter& fighter,
     const MoveKind kind = move_kind(fighter, db);
     ++m_frames[int(kind)];
     if (last.valid && last.character == fighter.character() && t_s > last.t_s) {
-        m_fastest[int(kind)].keep_fastest(joint_speeds(last.sample, sample, t_s - last.t_s));
+        const JointSpeeds speeds = joint_speeds(last.sample, sample, t_s - last.t_s);
+        JointSpeeds& fastest = m_fastest[int(kind)];
+        if (speeds.wrist_mps > fastest.wrist_mps) m_peak_times[int(kind)].wrist_at_s = t_s;
+        if (speeds.ankle_mps > fastest.ankle_mps) m_peak_times[int(kind)].ankle_at_s = t_s;
+        fastest.keep_fastest(speeds);
     }
     last = {true, fighter.character(), t_s, sample};
     if (head && (fighter.state() == FighterState::rest || fighter.state() == FighterState::approach)) {

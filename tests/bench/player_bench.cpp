@@ -53,11 +53,12 @@ enum class Opponent { wandering, punching_defended, punching_undefended };
 Run run(const MotionDatabaseView& db, const Retriever& retriever, CharacterRig& rig, int count, double seconds, bool orders,
         Opponent opponent = Opponent::wandering, int plans_per_frame = BoutOptions{}.plans_per_frame) {
     std::vector<std::unique_ptr<Fighter>> fighters;
+    const auto library_speeds = measure_library_speeds(db, {&rig}); // once, as a Bout does
     for (int i = 0; i < count; ++i) {
         FighterSettings settings;
         settings.start_x_m = (i - 0.5 * (count - 1)) * 1.2;
         settings.defence.enabled = opponent != Opponent::punching_undefended;
-        fighters.push_back(std::make_unique<Fighter>(db, retriever, std::vector<CharacterRig*>{&rig}, settings));
+        fighters.push_back(std::make_unique<Fighter>(db, retriever, std::vector<CharacterRig*>{&rig}, settings, library_speeds));
     }
     SimulatedUser user(opponent == Opponent::wandering ? SimulatedKind::wander : SimulatedKind::punch, 1);
     Run result;

@@ -147,3 +147,71 @@ TEST_CASE("fighter: how long a strike's hit point stays where it stopped, as its
     CHECK(compared >= 4);
     CHECK(held_total_s > 0.0); // some stay a frame or two: the measure is not always 0
 }
+
+namespace {
+
+// 30 s against a user who punches at the fighter and walks, with orders of punches and kicks: blocks against fists
+// that leave little time (the synthesized block's arm was asked for 20-80 rad/s at the elbow), strikes, recoveries,
+// steps. The meter of the bout, and the frames the fighter's speed limit held back.
+MotionMeter punching_bout(const MotionDatabaseView& db, bool human_speed, long long& held) {
+    FighterSettings settings;
+    settings.human_speed = human_speed;
+    kumite::test::Bout bout(db, "brawler", settings);
+    MotionMeter meter(1);
+    SimulatedUser user(SimulatedKind::punch, 7);
+    for (int frame = 0; frame < 30 * 60; ++frame) {
+        const double t = frame / 60.0;
+        if (frame >= 60 && frame % 120 == 0) bout.fighter->order(bout.retriever->semantics_id(frame % 240 ? "kick" : "punch"), Side::none);
+        const Eigen::Vector3d head = bout.step_against(user, t);
+        bout.fighter->clear_events();
+        meter.measure(0, t, *bout.fighter, bout.db, bout.brawler.anatomy, &head);
+    }
+    held = 0;
+    for (long long frames : bout.fighter->held_back_frames()) held += frames;
+    return meter;
+}
+
+} // namespace
+
+TEST_CASE("fighter: no joint moves faster than the library's fastest for its kind, blocks, strikes and steps alike", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = kumite::test::reference_database();
+    if (!content) return;
+    long long held = 0;
+    const MotionMeter meter = punching_bout(content->view(), true, held);
+    const kumite::test::StandingCharacter brawler("brawler", content->view());
+    const auto library = library_joint_speeds(content->view(), brawler.skeleton(), brawler.anatomy);
+    for (int k = 0; k < k_move_kind_count; ++k) {
+        CAPTURE(move_kind_name(MoveKind(k)));
+        const JointSpeeds bar = speed_bar(library, MoveKind(k));
+        const JointSpeeds& fastest = meter.fastest()[std::size_t(k)];
+        CHECK(fastest.wrist_mps <= 1.002 * bar.wrist_mps);
+        CHECK(fastest.ankle_mps <= 1.002 * bar.ankle_mps);
+        CHECK(fastest.elbow_radps <= 1.002 * bar.elbow_radps + 1e-9);
+        CHECK(fastest.knee_radps <= 1.002 * bar.knee_radps + 1e-9);
+        CHECK(fastest.wrist_mps <= 1.002 * k_human_extremity_mps);
+        CHECK(fastest.ankle_mps <= 1.002 * k_human_extremity_mps);
+    }
+    REQUIRE(meter.frames()[int(MoveKind::block)] + meter.frames()[int(MoveKind::slip)] > 30);
+    REQUIRE(meter.frames()[int(MoveKind::punch)] > 30);
+    CHECK(held > 0); // the parts asked for more than a person's speed somewhere, and were held to it
+
+    // Without the limit the same bout goes over: the block's arm, the strikes' recoveries.
+    long long held_free = 0;
+    const MotionMeter free_meter = punching_bout(content->view(), false, held_free);
+    CHECK(held_free == 0);
+    CHECK(free_meter.fastest_overall().wrist_mps > k_human_extremity_mps);
+}
+
+TEST_CASE("joint speeds: the bar of each kind of move", "[runtime]") {
+    std::array<JointSpeeds, k_move_kind_count> library{};
+    library[int(MoveKind::guard)] = {0.3, 0.1, 0.2, 1.5};
+    library[int(MoveKind::punch)] = {14.0, 6.0, 26.0, 10.0};
+    library[int(MoveKind::kick)] = {8.0, 11.0, 12.0, 22.0};
+    library[int(MoveKind::block)] = {7.0, 4.0, 21.0, 8.0};
+    CHECK(speed_bar(library, MoveKind::hold).wrist_mps == 0.3);               // a hold is held to the guard's
+    CHECK(speed_bar(library, MoveKind::recover).knee_radps == 22.0);          // a recovery to the fastest strike's
+    CHECK(speed_bar(library, MoveKind::recover).wrist_mps == k_human_extremity_mps); // never over a person's
+    CHECK(speed_bar(library, MoveKind::slip).elbow_radps == 21.0);            // no slip clips: the block's
+    library[int(MoveKind::block)] = {};
+    CHECK(speed_bar(library, MoveKind::slip).ankle_mps == 11.0);              // nor block clips: the strikes'
+}

@@ -1,5 +1,7 @@
 #include "fighter/character_body.h"
 
+#include "kumite/core/forward_kinematics.h"
+
 namespace kumite {
 
 CharacterBody::CharacterBody(const MotionDatabaseView& db, const std::vector<CharacterRig*>& characters, double start_x_m,
@@ -10,7 +12,9 @@ CharacterBody::CharacterBody(const MotionDatabaseView& db, const std::vector<Cha
         rig->rig->stand_at_origin(m_pose, db);
         rig->encoder.encode(m_mir, m_pose.view());
         rig->decoder.decode(m_pose, m_mir);
-        m_shown_by_adapter = false;
+        m_shown = Shown::decoder;
+        const std::size_t joints = std::size_t(rig->rig->skeleton().joint_count());
+        if (joints > m_edited_positions.size()) m_edited_positions.resize(joints), m_edited_rotations.resize(joints);
         for (MirFrame* frame : any_character) *frame = m_mir;
         rig->adapter.begin({punch >= 0 ? punch : 0, 0, 0, {}, {}}, m_mir, {true, true}, {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()});
     }
@@ -30,17 +34,25 @@ bool CharacterBody::select(int index) {
 
 void CharacterBody::decode(const MirFrame& frame, const LimbPins& pins) {
     current().decoder.decode(m_pose, frame, pins);
-    m_shown_by_adapter = false;
+    m_shown = Shown::decoder;
+}
+
+void CharacterBody::show_edited_pose() {
+    const std::size_t joints = std::size_t(current().rig->skeleton().joint_count());
+    forward_kinematics(std::span(m_edited_positions).first(joints), std::span(m_edited_rotations).first(joints), current().rig->skeleton(), m_pose.view());
+    m_shown = Shown::edited;
 }
 
 std::span<const Eigen::Vector3d> CharacterBody::positions() const {
     const Rig& rig = current();
-    return m_shown_by_adapter ? rig.adapter.positions() : rig.decoder.model_positions();
+    if (m_shown == Shown::edited) return std::span<const Eigen::Vector3d>(m_edited_positions).first(std::size_t(rig.rig->skeleton().joint_count()));
+    return m_shown == Shown::adapter ? rig.adapter.positions() : rig.decoder.model_positions();
 }
 
 std::span<const Eigen::Quaterniond> CharacterBody::rotations() const {
     const Rig& rig = current();
-    return m_shown_by_adapter ? rig.adapter.rotations() : rig.decoder.model_rotations();
+    if (m_shown == Shown::edited) return std::span<const Eigen::Quaterniond>(m_edited_rotations).first(std::size_t(rig.rig->skeleton().joint_count()));
+    return m_shown == Shown::adapter ? rig.adapter.rotations() : rig.decoder.model_rotations();
 }
 
 Eigen::Vector3d CharacterBody::part_position(BodyPart part) const {

@@ -49,7 +49,10 @@ public:
     // The pose decoded from `frame` (with `pins`) on the current character: the decoder's is shown.
     void decode(const MirFrame& frame, const LimbPins& pins = {});
     // The strike adapter's pose is shown (it decoded into pose()).
-    void show_adapter() { m_shown_by_adapter = true; }
+    void show_adapter() { m_shown = Shown::adapter; }
+    // The pose in pose() is shown as it now is, edited after its decoding (the speed limit's): its model transforms
+    // computed again here.
+    void show_edited_pose();
     // The pose shown, encoded again into `frame`.
     void encode(MirFrame& frame) { current().encoder.encode(frame, m_pose.view()); }
 
@@ -62,7 +65,10 @@ public:
 private:
     std::vector<std::unique_ptr<Rig>> m_rigs;
     int m_index = 0;
-    bool m_shown_by_adapter = false;
+    enum class Shown { decoder, adapter, edited };
+    Shown m_shown = Shown::decoder;
+    std::vector<Eigen::Vector3d> m_edited_positions;    // model, of an edited pose: sized for the largest skeleton
+    std::vector<Eigen::Quaterniond> m_edited_rotations;
     MirFrame m_mir;
     Pose m_pose;
     HeadingFrame m_heading;

@@ -7,6 +7,7 @@
 #include "fighter/footwork.h"
 #include "fighter/motion_player.h"
 #include "fighter/order_queue.h"
+#include "fighter/speed_limit.h"
 #include "fighter/strike.h"
 #include "fighter/strike_planner.h"
 #include "fighter/tracked_user.h"
@@ -16,13 +17,19 @@
 namespace kumite {
 
 struct Fighter::Parts {
-    Parts(const MotionDatabaseView& database, const Retriever& retriever, const std::vector<CharacterRig*>& characters, const FighterSettings& settings)
-        : db(database), user(settings.head_motion), orders(retriever, settings.order_wait_s), footwork(db, settings), player(db, footwork.guard_clip()), strike(db, settings),
+    Parts(const MotionDatabaseView& database, const Retriever& retriever, const std::vector<CharacterRig*>& characters, const FighterSettings& settings,
+          std::shared_ptr<const LibrarySpeeds> library_speeds)
+        : db(database), speed_limit(library_speeds ? std::move(library_speeds) : measure_library_speeds(database, characters)), user(settings.head_motion), orders(retriever, settings.order_wait_s), footwork(db, settings), player(db, footwork.guard_clip()), strike(db, settings),
           planner(db, retriever, settings), defence(db, settings.defence),
           body(db, characters, settings.start_x_m, defence.frames(),
-               std::array<MirFrame*, 4>{player.frames()[0], player.frames()[1], player.frames()[2], &strike.start_frame()}) {}
+               std::array<MirFrame*, 4>{player.frames()[0], player.frames()[1], player.frames()[2], &strike.start_frame()}) {
+        int joints = 0;
+        for (const CharacterRig* character : characters) joints = std::max(joints, character->skeleton().joint_count());
+        speed_limit.reserve(joints);
+    }
 
     const MotionDatabaseView db; // the parts' references point here
+    SpeedLimit speed_limit;
     EventLog log;
     TrackedUser user;
     OrderQueue orders;

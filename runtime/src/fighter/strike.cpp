@@ -24,6 +24,7 @@ void Strike::start(double t_s, const Purpose& purpose) {
     m_purpose = purpose;
     m_start_s = t_s;
     m_contact_done = false;
+    m_contact_now = false;
     m_over = false;
     m_overshoot_m = 0.0;
     m_held_s = 0.0;
@@ -73,7 +74,7 @@ void Strike::steer(double to_contact_s, CharacterBody& body, const TrackedUser& 
     m_plan.target_world = target;
 }
 
-void Strike::play(double t_s, CharacterBody& body, const TrackedUser& user, EventLog& log) {
+void Strike::play(double t_s, CharacterBody& body, const TrackedUser& user) {
     StrikeAdapter& adapter = body.current().adapter;
     // Frames of the database's rate, as a fractional index; the contact frame is played exactly.
     double index = (t_s - m_start_s) / m_db.meta.frame_time_s;
@@ -93,29 +94,41 @@ void Strike::play(double t_s, CharacterBody& body, const TrackedUser& user, Even
     body.show_adapter();
     m_overshoot_m = std::max(m_overshoot_m, frame.past_target_m);
     m_violations += joint_violation_count(frame.joint_violations);
-    if (at_contact) {
-        m_contact_done = true;
+    body.encode(body.mir()); // what the defence's edits start from
+    m_contact_now = at_contact;
+    if (at_contact) m_contact_done = true;
+    m_over = index >= adapter.frame_count() - 1;
+}
+
+void Strike::measure(double t_s, CharacterBody& body, const TrackedUser& user, EventLog& log) {
+    // The hit point as the adapter places it: the striking limb's extremity, or its middle joint (knee, elbow).
+    const BodyPart part = static_cast<BodyPart>(segment());
+    const int limb_index = segment() >= 0 ? limb_of_segment(part) : -1;
+    Eigen::Vector3d effector = body.heading().origin;
+    if (limb_index >= 0) {
+        const LimbChain& limb = body.anatomy().limbs[limb_index];
+        effector = body.positions()[std::size_t(segment_strikes_with_middle(part) ? limb.middle : limb.extremity)];
+    }
+    if (m_contact_now) {
         FighterEvent contact_event = event(FighterEvent::Type::strike, t_s);
-        contact_event.contact_error_m = (frame.effector - m_plan.target_world).norm();
-        contact_event.head_distance_m = user.tracking() ? (frame.effector - aimed_point(user)).norm() : 1e9;
+        contact_event.contact_error_m = (effector - m_plan.target_world).norm();
+        contact_event.head_distance_m = user.tracking() ? (effector - aimed_point(user)).norm() : 1e9;
         contact_event.hit = contact_event.head_distance_m <= m_hit_radius_m;
         contact_event.prediction_error_m = user.tracking() ? (aimed_point(user) - m_plan.target_world).norm() : 1e9;
         if (user.tracking()) contact_event.aimed_point_at_contact = aimed_point(user);
         contact_event.range_m = m_purpose.range_m;
         if (m_previous_effector_s >= 0.0 && t_s > m_previous_effector_s) {
-            contact_event.effector_speed_mps = (frame.effector - m_previous_effector).norm() / (t_s - m_previous_effector_s);
+            contact_event.effector_speed_mps = (effector - m_previous_effector).norm() / (t_s - m_previous_effector_s);
         }
         log.push(contact_event);
     }
     // From the contact on, while the hit point stays where it stopped (the target, or out of reach the nearest point
     // to it): how long it is held there.
-    if (at_contact) m_holding = true;
-    else if (m_holding && (frame.effector - adapter.stop_point()).norm() <= 0.01 && t_s > m_previous_effector_s) m_held_s += t_s - m_previous_effector_s;
+    if (m_contact_now) m_holding = true;
+    else if (m_holding && (effector - body.current().adapter.stop_point()).norm() <= 0.01 && t_s > m_previous_effector_s) m_held_s += t_s - m_previous_effector_s;
     else m_holding = false;
-    m_previous_effector = frame.effector;
+    m_previous_effector = effector;
     m_previous_effector_s = t_s;
-    body.encode(body.mir());
-    m_over = index >= adapter.frame_count() - 1;
 }
 
 void Strike::end(double t_s, EventLog& log) {

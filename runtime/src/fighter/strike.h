@@ -37,8 +37,12 @@ public:
     // The strike carried on on another character (set_character): begun again there from the frame it began from.
     void carry_over(CharacterBody& body);
 
-    // One frame: the adapted pose onto the body (its MIR frame encoded again), the contact judged and told.
-    void play(double t_s, CharacterBody& body, const TrackedUser& user, EventLog& log);
+    // One frame: the adapted pose onto the body (its MIR frame encoded again), the contact judged (the impact taken
+    // or followed through).
+    void play(double t_s, CharacterBody& body, const TrackedUser& user);
+    // The same frame as shown (after the defence's edits and the speed limit): the contact told from the hit point
+    // shown (error, hit, speed), the time held at the target, the body's MIR frame encoded from the pose shown.
+    void measure(double t_s, CharacterBody& body, const TrackedUser& user, EventLog& log);
     bool over() const { return m_over; } // the last frame was played: strike_end() and recover
     void end(double t_s, EventLog& log);
 
@@ -59,6 +63,7 @@ private:
     MirFrame m_start_frame;
     double m_start_s = 0.0;
     bool m_contact_done = false;
+    bool m_contact_now = false;      // this frame is the contact (play() to measure())
     bool m_over = false;
     bool m_impact = true;
     double m_overshoot_m = 0.0;

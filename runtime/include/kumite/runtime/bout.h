@@ -33,6 +33,7 @@ struct BoutOptions {
     int start_character = 0; // index into the characters
     double lead_s = 0.4;     // strikes start at least this long before their contact (a sparring partner telegraphs)
     double contact_extension = RetrievalSettings{}.contact_extension; // where strikes make contact (retrieval.h)
+    double contact_speed_share = RetrievalSettings{}.contact_speed_share;
     double rate_hz = 60.0;
     bool record = false;
     // At most this many fighters plan a strike per frame (planning_budget.h); the others plan on the next frames.

@@ -20,6 +20,7 @@
 #include "kumite/runtime/defence.h"
 #include "kumite/runtime/fighter_event.h"
 #include "kumite/runtime/fighter_settings.h"
+#include "kumite/runtime/joint_speeds.h"
 #include "kumite/runtime/simulated_hands.h"
 
 #include <memory>
@@ -30,9 +31,10 @@ namespace kumite {
 
 class Fighter {
 public:
-    // `characters` must outlive the fighter; the first is the starting one.
+    // `characters` must outlive the fighter; the first is the starting one. `library_speeds`: the library's speeds
+    // on each character (measure_library_speeds; the speed limit's bars), shared by fighters; none: measured here.
     Fighter(const MotionDatabaseView& database, const Retriever& retriever, std::vector<CharacterRig*> characters,
-            FighterSettings settings = {});
+            FighterSettings settings = {}, std::shared_ptr<const LibrarySpeeds> library_speeds = nullptr);
     ~Fighter();
     Fighter(const Fighter&) = delete;
     Fighter& operator=(const Fighter&) = delete;
@@ -68,6 +70,9 @@ public:
     bool may_plan() const;
     int character() const;
     const Pose& pose() const;                                // on the current character
+    // The speed limit (human speed): frames it held back, per MoveKind, and the furthest a wrist or ankle lagged.
+    const std::array<long long, k_move_kind_count>& held_back_frames() const;
+    double held_back_lag_m() const;
     // The pose shown, in the MIR (to record it on any skeleton): a block's or slip's edits included.
     const MirFrame& mir() const;
     std::span<const Eigen::Vector3d> positions() const;      // model positions of pose()
@@ -97,6 +102,7 @@ private:
     void plan(double t_s);                                // the pending order's strike, when the fighter may plan
     void play_strike(double t_s);                         // the strike's frame; its end starts the recovery
     void move(double t_s);                                // hold, recover, guard and steps
+    void show(double t_s);                                // the frame's pose held to human speed, its heading
     void enter(FighterState state, double t_s);
     bool busy() const; // striking, recovering, defending or with an order under way: new orders wait
 

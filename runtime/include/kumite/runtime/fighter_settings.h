@@ -67,6 +67,10 @@ struct FighterSettings {
     // and target distance). 0 recent: always the best.
     int variety_recent = 6; // with ~40 clips per order, 6 keeps twenty same orders on at least six clips
     double variety_margin = 0.15;
+    // Human speed (issue 44): no joint shown faster than the library's fastest for its kind of move (speed_limit.h);
+    // a part that asks for more is shown lagging. Off until the defence reads punches early enough to block at that
+    // speed (runtime/README.md, "Human speed").
+    bool human_speed = false;
 };
 inline constexpr int k_max_variety_recent = 8;
 

@@ -5,6 +5,7 @@
 // frame and is no joint speed a person could be measured at). The fighter's are measured every frame (motion_meter.h); the library's are those of the
 // database's clips played on a character, the bar a fighter must stay under.
 
+#include "kumite/core/character_rig.h"
 #include "kumite/core/motion_database.h"
 #include "kumite/core/rest_anatomy.h"
 #include "kumite/core/skeleton.h"
@@ -13,7 +14,9 @@
 #include <Eigen/Geometry>
 
 #include <array>
+#include <memory>
 #include <span>
+#include <vector>
 
 namespace kumite {
 
@@ -43,6 +46,25 @@ JointSpeeds joint_speeds(const LimbSample& before, const LimbSample& after, doub
 // database's rate; a clip's speed is its second-fastest frame's (a capture's one-frame glitch is not a person's
 // speed), a kind's the fastest of its clips. Kinds without clips stay 0. Decodes every pose once (~0.2 s).
 std::array<JointSpeeds, k_move_kind_count> library_joint_speeds(const MotionDatabaseView& db, const Skeleton& skeleton, const RestAnatomy& anatomy);
+// No human wrist or ankle moves faster than this (m/s; the fastest punches and kicks measured), whatever the library.
+inline constexpr double k_human_extremity_mps = 12.0;
+
+// The bar a frame of `kind` is held to, from the library's fastest per kind: its own kind's; a hold's is the guard's
+// (it has no clips of its own), a recovery's (a strike blended back into the guard) the fastest strike's; a kind the
+// library has no clips of (a slip) the block's, else the fastest strike's. Wrists and ankles never above
+// k_human_extremity_mps. A measure the bar leaves 0 is not held to anything.
+JointSpeeds speed_bar(const std::array<JointSpeeds, k_move_kind_count>& library, MoveKind kind);
+
+// The library's fastest per kind, on each of a set of characters (library_joint_speeds), measured once and shared
+// by the fighters that play them.
+struct LibrarySpeeds {
+    std::vector<std::array<JointSpeeds, k_move_kind_count>> per_character;
+};
+
+// The library's speeds on each of `characters` (library_joint_speeds on each: ~0.2 s apiece on the reference
+// database): what a Bout measures once for all its fighters.
+std::shared_ptr<const LibrarySpeeds> measure_library_speeds(const MotionDatabaseView& db, const std::vector<CharacterRig*>& characters);
+
 // A clip's kind, or none (a clip of another kind: a hit reaction, a duck, a walk).
 bool clip_move_kind(const MotionDatabaseView& db, int clip, MoveKind& kind);
 

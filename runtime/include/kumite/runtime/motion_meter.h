@@ -26,6 +26,11 @@ public:
     const std::array<JointSpeeds, k_move_kind_count>& fastest() const { return m_fastest; }
     const std::array<long long, k_move_kind_count>& frames() const { return m_frames; }
     JointSpeeds fastest_overall() const;
+    // When the fastest wrist and ankle of each kind were measured (bout time, s; -1 none): where to look.
+    struct PeakTimes {
+        double wrist_at_s = -1.0, ankle_at_s = -1.0;
+    };
+    const std::array<PeakTimes, k_move_kind_count>& peak_times() const { return m_peak_times; }
     // Between strikes: the distance to the user's head on the floor, metres and leg lengths of the character.
     const ValueHistogram& distance_m() const { return m_distance_m; }
     const ValueHistogram& distance_legs() const { return m_distance_legs; }
@@ -43,6 +48,7 @@ private:
     std::vector<Last> m_last;
     std::array<JointSpeeds, k_move_kind_count> m_fastest{};
     std::array<long long, k_move_kind_count> m_frames{};
+    std::array<PeakTimes, k_move_kind_count> m_peak_times{};
     ValueHistogram m_distance_m{1e-3, 100.0}, m_distance_legs{1e-3, 100.0};
 };
 
