@@ -149,8 +149,8 @@ def score_capture(source, moves, proposals, frame_rate):
                                blocks_found_known=blocks_found if blocks_known else 0)
 
 
-def frame_rates(kumite, mocap, sources, fps):
-    """source -> frames per second (from the annotation file, else from a `kumite info`-free read of the header)."""
+def frame_rates(mocap, sources, fps):
+    """source -> frames per second: the annotation file's for captures that give none, else the file's Frame Time."""
     rates = {}
     for source in sources:
         if source in fps:
@@ -214,7 +214,7 @@ def main():
     args = parser.parse_args()
     mocap = os.path.realpath(args.mocap)
     captures, moves, fps = load_ground_truth(mocap)
-    rates = frame_rates(args.kumite, mocap, captures, fps)
+    rates = frame_rates(mocap, captures, fps)
     grid = json.load(open(args.grid)) if args.grid else [{}]
 
     def run(thresholds):
