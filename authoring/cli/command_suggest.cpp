@@ -19,7 +19,7 @@ const CommandSpec& suggest_spec() {
         "suggest",
         "FILE.bvh... [--segment PART] [--verbose] [--json]",
         "Proposes the strikes in captures: punches (hand extension peaks in front of the chest after a fast\n"
-        "move), kicks (a straight leg raised, its foot reaching out), knee strikes (a folded leg whose knee rises)\n"
+        "move, or a fist swung and stopped with the elbow bent: hooks, uppercuts), kicks (a straight leg raised, its foot reaching out), knee strikes (a folded leg whose knee rises)\n"
         "and elbow strikes (an elbow driven up with the fist folded by the head), each with its hit frame and span. With --segment\n"
         "PART, reports the extension peaks of that body part instead (semantics 'reach'). --write-annotations\n"
         "turns every suggestion into a clip (mirrored too), with paths relative to --mocap-root when under it.\n"
@@ -28,11 +28,14 @@ const CommandSpec& suggest_spec() {
         "annotation file and prints how often they agree with its labels, with the confusion tables. With captures\n"
         "and --compare, it scores the detection instead: per folder, recall and precision against the file's\n"
         "strikes of those captures (same semantics and side, hits within 0.25 s), kind agreement, confusion tables.\n"
-        "The captures' warnings come at the end, one line per kind with how many; --verbose lists every one.",
+        "The captures' warnings come at the end, one line per kind with how many; --verbose lists every one.\n"
+        "--thresholds NAME=V,... tries other detection thresholds (scripts/suggest_lopo.py chooses them per held-out\n"
+        "performer).",
         0, 100000,
         {{"segment", "PART", "a body part (hand_l, foot_r, head, ...): report its extension peaks"},
          {"write-annotations", "OUT.json", "write every suggestion as a clip of an annotation file ready for bake"},
          {"compare", "ANNOTATIONS.json", "compare with the file's labels (alone), or score the detection on the captures given"},
+         {"thresholds", "NAME=V,...", "try other detection thresholds (core/strike_thresholds.h; scripts/suggest_lopo.py chooses them)"},
          unit_flag(), strict_flag(), fps_flag(), mocap_root_flag(), body_map_flag(), verbose_flag(), json_flag()}};
     return spec;
 }
@@ -63,14 +66,20 @@ nlohmann::json strikes_json(const std::vector<StrikeSuggestion>& strikes) {
 
 int run_compare(const std::string& annotations_path, const CaptureOptions& options, bool as_json); // below
 int run_detection_compare(const std::vector<std::string>& paths, const std::string& annotations_path, const CaptureOptions& options,
-                          bool as_json); // suggest_detection.cpp
+                          const StrikeThresholds& thresholds, bool as_json); // suggest_detection.cpp
 
 namespace {
 
 // Everything suggest does after its flags: the captures' strikes, or the comparisons (--compare).
 int suggest_from(const Arguments& arguments, const CaptureOptions& options) {
+    StrikeThresholds thresholds;
+    if (const std::optional<std::string> text = arguments.value("thresholds")) {
+        Result<StrikeThresholds> parsed = strike_thresholds_parse(*text);
+        if (!parsed) return usage_error(suggest_spec(), "--thresholds: " + parsed.error().message);
+        thresholds = *parsed;
+    }
     if (const std::optional<std::string> compare = arguments.value("compare")) {
-        if (!arguments.positionals.empty()) return run_detection_compare(arguments.positionals, *compare, options, arguments.has("json"));
+        if (!arguments.positionals.empty()) return run_detection_compare(arguments.positionals, *compare, options, thresholds, arguments.has("json"));
         return run_compare(*compare, options, arguments.has("json"));
     }
     if (arguments.positionals.empty()) return usage_error(suggest_spec(), "give captures to look at, or --compare ANNOTATIONS.json");
@@ -86,7 +95,7 @@ int suggest_from(const Arguments& arguments, const CaptureOptions& options) {
         Result<TimedCapture> capture = load_timed_capture(path, options, "suggest (strike speeds)");
         if (!capture) return input_error(capture.error().message);
         const BvhFile* file = &capture->file;
-        const std::vector<StrikeSuggestion> strikes = strikes_detect(file->clip, capture->anatomy, segment);
+        const std::vector<StrikeSuggestion> strikes = strikes_detect(file->clip, capture->anatomy, segment, thresholds);
         files.push_back({{"file", path}, {"strikes", strikes_json(strikes)}});
         const std::string source = source_relative_to_root(resolve_capture_path(path, options.mocap_root), options.mocap_root);
         if (!file->frame_rate_in_file) annotations.capture_fps[source] = 1.0 / file->clip.frame_time_s; // the bake needs it too

@@ -74,7 +74,7 @@ void print_table(const char* title, const std::map<std::string, std::map<std::st
 } // namespace
 
 int run_detection_compare(const std::vector<std::string>& paths, const std::string& annotations_path, const CaptureOptions& options,
-                          bool as_json) {
+                          const StrikeThresholds& thresholds, bool as_json) {
     Result<RawAnnotations> annotations = annotations_read_file(annotations_path);
     if (!annotations) return input_error(annotations.error().message);
     std::map<std::string, FolderTally> folders;
@@ -88,7 +88,7 @@ int run_detection_compare(const std::vector<std::string>& paths, const std::stri
         Result<TimedCapture> capture = load_timed_capture(path, file_options, "suggest (strike speeds)");
         if (!capture) return input_error(capture.error().message);
         const BvhFile* file = &capture->file;
-        const std::vector<StrikeSuggestion> proposed = strikes_detect(file->clip, capture->anatomy);
+        const std::vector<StrikeSuggestion> proposed = strikes_detect(file->clip, capture->anatomy, std::nullopt, thresholds);
 
         std::vector<const RawAnnotatedClip*> annotated;
         for (const RawAnnotatedClip& clip : annotations->clips) {

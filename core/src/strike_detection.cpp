@@ -1,5 +1,7 @@
 #include "kumite/core/strike_detection.h"
 
+#include "strike_swings.h"
+
 #include "kumite/core/root_from_feet.h"
 
 #include "kumite/core/contact_point.h"
@@ -20,11 +22,10 @@ constexpr double k_knee_speed = 3.5;       // leg lengths per second the knee re
 constexpr double k_block_above_head = 0.3; // a hand this far (arm lengths) above the head is blocking, not punching
 constexpr double k_elbow_rise = 0.8;       // how far an elbow strike lifts the elbow (upper-arm lengths) within 0.6 s
 constexpr double k_elbow_folded_deg = 84.0; // an elbow opened wider than this, its wrist up by the head, is a rising block
-// How far out a punch's fist gets from the chest on the floor plane, in arm lengths, at least: a straight punch
-// thrusts it away (CMU 14's jabs and crosses 0.86-1.16, the kata's 0.86-1.10); an arm opened with the fist still
-// by the body (a kata's chambers and middle blocks, 0.60-0.77) is not thrown at anything.
-constexpr double k_punch_reach = 0.8;
-constexpr double k_punch_rise = 0.3;       // how much a punch's extension grows in the 0.6 s before its hit
+// How far out a punch's fist gets from the chest (StrikeThresholds::punch_reach): a straight punch thrusts it away
+// (CMU 14's jabs and crosses 0.86-1.16, the kata's 0.86-1.10); an arm opened with the fist still by the body (a
+// kata's chambers and middle blocks, 0.60-0.77) is not thrown at anything.
+constexpr double k_straight_arm_deg = 165.0; // an elbow opened this far is a straight arm (a punch at head height, not a block on its way up)
 constexpr double k_thrust_window_s = 0.1;  // how long before the hit a punch's fist is seen travelling along its forearm
 constexpr double k_punch_thrust = 0.2;     // cosine between that travel and the forearm, at least
 constexpr double k_punch_forearm_down = -0.45; // sine of the forearm's slope below which it points down (27 degrees): a low sweep
@@ -96,13 +97,14 @@ const char* strike_semantics_name(StrikeSemantics semantics) {
     return "reach";
 }
 
-std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy& anatomy, std::optional<BodyPart> segment) {
+std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy& anatomy, std::optional<BodyPart> segment,
+                                             const StrikeThresholds& thresholds) {
     if (root_is_pinned(clip)) {
         // Read as the bake reads it: the root follows the foot the body stands on (root_from_feet.h), so that
         // heights are over the floor and not over a foot that hangs under pinned hips.
         Clip moved = clip;
         root_motion_from_feet(moved, anatomy.limbs[int(Limb::leg_l)].extremity, anatomy.limbs[int(Limb::leg_r)].extremity);
-        return strikes_detect(moved, anatomy, segment);
+        return strikes_detect(moved, anatomy, segment, thresholds);
     }
     const Skeleton& skeleton = clip.skeleton;
     const BodyMap& map = anatomy.body_map;
@@ -116,6 +118,7 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
     LimbTrack extremity(frames), middle(frames), root(frames);
     std::vector<double> head_y(frames, 0.0), part_distance(frames, 0.0);
     std::vector<Eigen::Vector3d> hips_forward(frames, Eigen::Vector3d::UnitZ()); // on the floor plane
+    std::vector<Eigen::Vector3d> pelvis_position(frames);
     const int pelvis = map.joint(BodyPart::pelvis);
     const int chest = map.joint(BodyPart::chest);
     const int head = map.joint(BodyPart::head);
@@ -155,6 +158,7 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
             root[frame][limb] = positions[chain.root];
         }
         head_y[frame] = positions[head].y();
+        pelvis_position[frame] = positions[pelvis];
         hips_forward[frame] = Eigen::Vector3d(pelvis_forward.x(), 0.0, pelvis_forward.z()).normalized();
         if (part_joint >= 0) part_distance[frame] = (positions[part_joint] - positions[pelvis]).norm() / part_rest_distance;
     }
@@ -224,6 +228,8 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
             // heading) is pulled back (a kata's hikite), not striking.
             if ((middle[hit][limb] - root[hit][limb]).dot(hips_forward[hit]) < 0.0) continue;
             if (already_found(strikes, StrikeSemantics::elbow, part, hit, 2 * min_gap)) continue; // a second top of one rise
+            // A hook raises the elbow fast too, but its fist swings ahead: the punch found there is the strike.
+            if (already_found(strikes, StrikeSemantics::punch, limb_parts(static_cast<Limb>(limb))[2], hit, 2 * min_gap)) continue;
             add(StrikeSemantics::elbow, part, side, hit, lift, 0.5 + 0.5 * std::min(1.0, (lift[peak] - lift[valley(lift, peak, -1, rise_window)] - k_elbow_rise) / 0.5));
         }
     };
@@ -288,6 +294,17 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
         if (travel.norm() < 1e-9 || forearm.norm() < 1e-9) return false;
         return travel.normalized().dot(forearm.normalized()) >= k_punch_thrust;
     };
+    auto arm_track = [&](int limb) {
+        ArmTrack track;
+        track.upper_length = anatomy.limbs[limb].upper_length;
+        track.lower_length = anatomy.limbs[limb].lower_length;
+        for (int frame = 0; frame < frames; ++frame) {
+            track.shoulder.push_back(root[frame][limb]);
+            track.elbow.push_back(middle[frame][limb]);
+            track.wrist.push_back(extremity[frame][limb]);
+        }
+        return track;
+    };
     for (int limb = 0; limb < k_limb_count; ++limb) {
         const bool arm = limb < 2;
         const Side side = limb % 2 == 0 ? Side::left : Side::right;
@@ -301,18 +318,20 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
             const auto peaks = local_maxima(signal, half_window, min_gap, [&](int frame) {
                 // A punch lands before the arm locks: 0.78 of the arm's length from the shoulder is a boxer's
                 // straight from a bladed guard (CMU 14); a karateka's reaches full extension.
-                if (signal[frame] < 0.78 || reach[frame][limb] < k_punch_reach) return false;
+                if (signal[frame] < 0.78 || reach[frame][limb] < thresholds.punch_reach) return false;
                 // The capture must go on a little after a hit: a hand still extending as the file ends may not
                 // have arrived.
                 if (frame + settle >= frames) return false;
                 // A hand above the head at full extension is a rising block (age-uke), not a punch; so is one at
-                // the head's height under an elbow raised well over the shoulder (the block on its way up).
+                // the head's height under an elbow raised well over the shoulder with the arm still bent (the block
+                // on its way up; a straight punch at the head of a taller opponent raises the elbow too).
                 if (extremity[frame][limb].y() > head_y[frame] + k_block_above_head * length) return false;
                 if (extremity[frame][limb].y() > head_y[frame] - 0.05 &&
-                    middle[frame][limb].y() - root[frame][limb].y() > 0.35 * chain.upper_length) return false;
+                    middle[frame][limb].y() - root[frame][limb].y() > 0.35 * chain.upper_length &&
+                    bend_deg(root[frame][limb], middle[frame][limb], extremity[frame][limb]) < k_straight_arm_deg) return false;
                 // A punch is thrown: the arm extends from bent within the last moments. An arm held out in a guard
                 // (karate's kamae) or settling into it stays extended.
-                if (signal[frame] - signal[valley(signal, frame, -1, speed_window * 2)] < k_punch_rise) return false;
+                if (signal[frame] - signal[valley(signal, frame, -1, speed_window * 2)] < thresholds.punch_rise) return false;
                 return fastest_over(extremity, limb, frame, speed_window, dt, length) >= 1.5;
             });
             for (int peak : peaks) {
@@ -325,8 +344,17 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
                 // A forearm pointing steeply down at the hit sweeps low (a downward block), it is not thrust at a target.
                 const Eigen::Vector3d forearm = extremity[hit][limb] - middle[hit][limb];
                 if (forearm.y() < k_punch_forearm_down * forearm.norm()) continue;
-                const double strength = std::min((signal[peak] - 0.78) / 0.22, (reach[peak][limb] - k_punch_reach) / 0.4);
+                const double strength = std::min((signal[peak] - 0.78) / 0.22, (reach[peak][limb] - thresholds.punch_reach) / 0.4);
                 add(StrikeSemantics::punch, parts[2], side, hit, signal, 0.5 + 0.5 * strength);
+            }
+            // Hooks and uppercuts land with the elbow bent: found by the fist's swing (strike_swings.h).
+            const int other_limb = limb ^ 1;
+            for (const SwingPunch& swing : swing_punches_detect(arm_track(limb), arm_track(other_limb), pelvis_position, hips_forward, head_y, side == Side::left, dt,
+                                                                     thresholds)) {
+                if (already_found(strikes, StrikeSemantics::punch, parts[2], swing.hit_frame, min_gap)) continue;
+                add(StrikeSemantics::punch, parts[2], side, swing.hit_frame, signal, 0.5 + 0.5 * swing.strength);
+                strikes.back().first_frame = swing.first_frame;
+                strikes.back().last_frame = std::min(frames - 1, swing.hit_frame + (swing.hit_frame - swing.first_frame));
             }
             detect_elbow_strikes(limb, side, parts[1]);
             detect_blocks(limb, side, parts[1]);
@@ -371,6 +399,18 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
             add(StrikeSemantics::knee, parts[1], side, hit, knee_rise, 0.5 + 0.5 * std::min(1.0, (knee_rise[hit] - k_knee_rise) / 0.3));
         }
     }
+    // Both arms thrust out together (a two-handed push, a dance, a wave) within thresholds.both_arms_s: neither is a
+    // punch. A one-two combination lands its punches one after the other.
+    const int together = static_cast<int>(std::lround(thresholds.both_arms_s / dt));
+    std::vector<StrikeSuggestion> single;
+    for (const StrikeSuggestion& strike : strikes) {
+        const bool paired = strike.semantics == StrikeSemantics::punch && std::any_of(strikes.begin(), strikes.end(), [&](const StrikeSuggestion& other) {
+                                return other.semantics == StrikeSemantics::punch && other.side != strike.side &&
+                                       std::abs(other.hit_frame - strike.hit_frame) <= together;
+                            });
+        if (!paired) single.push_back(strike);
+    }
+    strikes = std::move(single);
     // Arms fly out for balance during a kick, and reach for the opponent's head to pull it onto a knee (from up
     // to 0.6 s before it): an arm peak then is not a punch.
     const int grab_lead = static_cast<int>(std::lround(0.6 / dt));

@@ -83,3 +83,24 @@ TEST_CASE("cli: suggest --compare on the whole kata: strikes found, blocks and s
     CHECK(strikes["recall"].get<double>() >= 0.9);
     CHECK(strikes["precision"].get<double>() >= 0.9);
 }
+
+TEST_CASE("cli: suggest --thresholds tries other detection thresholds, an unknown name is a usage error", "[cli][corpus]") {
+    const std::filesystem::path hooks = kumite::test::mocap_root() / "snu-boxing/boxman_stand_dir_hook_right_near.bvh";
+    if (!std::filesystem::exists(hooks)) return;
+    auto punches = [](const std::string& out) {
+        int count = 0;
+        const nlohmann::json report = nlohmann::json::parse(out);
+        for (const auto& strike : report["strikes"]) count += strike["semantics"] == "punch" && strike["side"] == "right";
+        return count;
+    };
+    const auto chosen = run_command(kumite_exe() + " suggest " + hooks.string() + " --json");
+    REQUIRE(chosen.status == 0);
+    CHECK(punches(chosen.out) >= 19); // 21 right hooks, found by the fist's swing
+    // A swing must be faster than any hook here: none is found.
+    const auto slower = run_command(kumite_exe() + " suggest " + hooks.string() + " --thresholds swing_speed=40 --json");
+    REQUIRE(slower.status == 0);
+    CHECK(punches(slower.out) == 0);
+    const auto unknown = run_command(kumite_exe() + " suggest " + hooks.string() + " --thresholds swing_sped=40");
+    CHECK(unknown.status == 2);
+    CHECK(unknown.err.find("swing_speed") != std::string::npos);
+}
