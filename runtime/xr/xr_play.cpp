@@ -173,7 +173,9 @@ int run_xr_bout(Bout& bout, const XrPlayOptions& options, const std::function<vo
         }
         // The bout at its own rate up to the frame's display time (a 20 Hz runtime gets three steps a frame, 90 Hz
         // about two in three frames).
-        while (double(next_step) / bout.rate_hz() <= bout_t && !bout.quit_requested() && !session.exit_requested) {
+        // As headless: steps at 0, 1/rate, ... before the duration.
+        while (double(next_step) / bout.rate_hz() <= bout_t && double(next_step) / bout.rate_hz() < options.duration_s - 1e-9 &&
+               !bout.quit_requested() && !session.exit_requested) {
             bout.step(double(next_step) / bout.rate_hz());
             ++next_step;
             after_step();
