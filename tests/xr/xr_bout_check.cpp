@@ -9,26 +9,21 @@
 //     a still user 2.5 m away; the left eye's image must show the fighter where its joints project.
 // Prints every measured figure; exits 1 on any failed check.
 
-#include "remote_driver_client.h"
+#include "kumite_xr_driver.h"
 
 #include "kumite/runtime/capture_user.h"
 
 #include <QImage>
 #include <nlohmann/json.hpp>
 
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
-#include <csignal>
 #include <fstream>
 #include <iostream>
 #include <sstream>
-#include <thread>
 #include <vector>
 
 namespace {
@@ -45,24 +40,6 @@ void check(bool ok, const std::string& what) {
 struct Fed {
     Eigen::Vector3d head, left, right;
 };
-
-bool child_running(void* pid) {
-    int status = 0;
-    return ::waitpid(*static_cast<pid_t*>(pid), &status, WNOHANG) == 0;
-}
-
-pid_t spawn(const std::vector<std::string>& arguments, const std::string& log) {
-    const pid_t pid = ::fork();
-    if (pid == 0) {
-        std::vector<char*> argv;
-        for (const std::string& a : arguments) argv.push_back(const_cast<char*>(a.c_str()));
-        argv.push_back(nullptr);
-        if (std::FILE* out = std::freopen(log.c_str(), "w", stdout)) (void)out;
-        ::execv(argv[0], argv.data());
-        std::_Exit(127);
-    }
-    return pid;
-}
 
 nlohmann::json read_json(const std::string& path) {
     std::ifstream in(path);
@@ -112,8 +89,8 @@ int main(int argc, char** argv) {
     const std::string mode = argv[1], kumite = argv[2], db = argv[3], capture_path = argv[4], out = argv[5];
     const bool bout = mode == "bout";
     const double duration_s = argc > 6 ? std::atof(argv[6]) : (bout ? 30.0 : 3.0);
-    const char* port_text = std::getenv("KUMITE_XR_REMOTE_PORT");
-    if (!port_text) {
+    const int port = remote_port_from_environment();
+    if (port == 0) {
         std::cerr << "xr_bout_check: KUMITE_XR_REMOTE_PORT is unset: run it through scripts/with_monado.sh\n";
         return 2;
     }
@@ -139,21 +116,8 @@ int main(int argc, char** argv) {
     // Predicted aim: a boxer never holds still, the strike goes where the head is heading.
     if (bout) command.insert(command.end(), {"--commands", "script:" + orders_path, "--aim", "predicted"});
     else command.insert(command.end(), {"--xr-eye-image", image_path});
-    pid_t pid = spawn(command, out + "/kumite.out");
-
-    RemoteDriverClient client;
-    std::string error;
-    if (!client.connect(std::atoi(port_text), 60.0, child_running, &pid, error)) {
-        std::cerr << "xr_bout_check: " << error << "\n";
-        ::kill(pid, SIGKILL);
-        return 1;
-    }
     std::vector<Fed> fed;
-    const auto start = std::chrono::steady_clock::now();
-    int status = 0;
-    bool exited = false;
-    while (!exited) {
-        const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const KumiteRun run = run_kumite_xr(command, out + "/kumite.out", port, duration_s + 90.0, [&](double t, RemoteData& data) {
         Fed sample;
         kumite::UserHands hands;
         if (bout) {
@@ -163,28 +127,20 @@ int main(int argc, char** argv) {
             sample.head = {0.0, 1.65, 2.5}, sample.left = {-0.25, 1.0, 2.4}, sample.right = {0.25, 1.0, 2.4};
         }
         const Eigen::Quaternionf turn(Eigen::AngleAxisf(bout ? float(0.3 * std::sin(0.7 * t)) : 0.0f, Eigen::Vector3f::UnitY()));
-        RemoteData data = client.latest();
         const Eigen::Vector3f eyes = sample.head.cast<float>() - turn * Eigen::Vector3f(0.0f, 0.0f, k_head_centre_behind_eyes_m);
         data.head.center = remote_pose(turn, eyes);
         data.left.pose = remote_pose(Eigen::Quaternionf::Identity(), sample.left.cast<float>());
         data.right.pose = remote_pose(Eigen::Quaternionf::Identity(), sample.right.cast<float>());
         data.left.active = data.right.active = true;
         data.right.a_click = bout && t > 12.0 && t < 12.3;
-        // What was sent, in the float precision it was sent with.
+        // What is sent, in the float precision it is sent with.
         sample.head = (Eigen::Vector3f(data.head.center.x, data.head.center.y, data.head.center.z) + turn * Eigen::Vector3f(0, 0, k_head_centre_behind_eyes_m)).cast<double>();
         sample.left = sample.left.cast<float>().cast<double>(), sample.right = sample.right.cast<float>().cast<double>();
-        if (!client.send(data, error)) break; // kumite (and Monado in it) ended
         fed.push_back(sample);
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-        exited = ::waitpid(pid, &status, WNOHANG) == pid;
-        if (t > duration_s + 60.0) {
-            ::kill(pid, SIGKILL);
-            std::cerr << "xr_bout_check: kumite play --xr did not end within a minute of its duration\n";
-            return 1;
-        }
-    }
-    if (!exited) ::waitpid(pid, &status, 0);
-    check(WIFEXITED(status) && WEXITSTATUS(status) == 0, "kumite play --xr exited with status 0 (" + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")");
+        return true;
+    });
+    if (!run.error.empty()) std::cerr << "xr_bout_check: " << run.error << "\n";
+    check(run.exit_status == 0, "kumite play --xr exited with status 0 (" + std::to_string(run.exit_status) + ")");
     const nlohmann::json report = read_json(report_path);
     if (!report.is_object() || !report.contains("xr")) {
         check(false, "the report has an xr object");
