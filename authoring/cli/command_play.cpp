@@ -59,6 +59,7 @@ const CommandSpec& play_spec() {
          {"headless", "", "no window"},
          {"xr", "", "in an OpenXR headset (the system's runtime; XR_RUNTIME_JSON honoured): its head and grips are the user, both\n"
                     "eyes drawn into the runtime's swapchains; runs --duration S of bout time (README \"In the headset\")"},
+         {"xr-view-size", "WxH", "with --xr: the swapchain size per eye (default: the runtime's recommended size)"},
          {"xr-eye-image", "OUT.png", "with --xr: the left eye's image near the end of the bout (its geometry in the report's xr.eye_image)"},
          {"screenshot", "OUT.png", "viewer: save the window after --duration seconds and close"},
          {"viewer-config", "FILE.json", "the wall screen's corners, the eye separation, stereo and camera mode (see runtime/player/README.md)"},
@@ -152,7 +153,7 @@ int run_play(int argc, char** argv) {
     }
     const bool xr = arguments.has("xr");
     if (xr && arguments.has("tracker")) return usage_error(play_spec(), "--xr: the headset is the tracker, leave out --tracker");
-    if (arguments.has("xr-eye-image") && !xr) return usage_error(play_spec(), "--xr-eye-image needs --xr");
+    if ((arguments.has("xr-eye-image") || arguments.has("xr-view-size")) && !xr) return usage_error(play_spec(), "--xr-eye-image and --xr-view-size need --xr");
     Result<std::unique_ptr<HeadTracker>> tracker =
         xr ? Result<std::unique_ptr<HeadTracker>>(HeadTracker::fed())
            : HeadTracker::open(arguments.value("tracker").value_or("simulate:still"), dtrack_config, static_cast<std::uint64_t>(*seed));

@@ -5,6 +5,7 @@
 #include "xr_view_math.h"
 #endif
 
+#include <cstdio>
 #include <iostream>
 
 namespace kumite::cli {
@@ -23,6 +24,15 @@ int play_xr(Bout& bout, const Arguments& arguments, double duration_s, const std
     view::XrPlayOptions options;
     options.duration_s = duration_s;
     options.eye_image_path = arguments.value("xr-eye-image").value_or("");
+    if (const std::optional<std::string> size = arguments.value("xr-view-size")) {
+        int width = 0, height = 0;
+        char x = 0, rest = 0;
+        if (std::sscanf(size->c_str(), "%d%c%d%c", &width, &x, &height, &rest) != 3 || x != 'x' || width < 16 || height < 16 || width > 8192 || height > 8192) {
+            std::cerr << "kumite play: --xr-view-size must be WIDTHxHEIGHT in pixels (16 to 8192), not '" << *size << "'\n";
+            return 2;
+        }
+        options.view_size = {width, height};
+    }
     view::XrPlayOutcome outcome;
     auto on_state = [&](double t_s, const char* state) { write_event({{"t", t_s}, {"type", "xr_session"}, {"state", state}}); };
     if (const int status = view::run_xr_bout(bout, options, after_step, on_state, outcome); status != 0) return status;
@@ -31,6 +41,7 @@ int play_xr(Bout& bout, const Arguments& arguments, double duration_s, const std
                  {"graphics", "OpenGL (XR_KHR_opengl_enable, GLX)"},
                  {"space", outcome.stage_space ? "stage" : "local_floor_offset"},
                  {"view_size_px", {outcome.view_width, outcome.view_height}},
+                 {"swapchain_size_px", {outcome.swapchain_width, outcome.swapchain_height}},
                  {"head_centre_behind_eyes_m", view::k_head_centre_behind_eyes_m},
                  {"frames_waited", outcome.frames_waited},
                  {"frames_submitted", outcome.frames_submitted},
@@ -43,6 +54,7 @@ int play_xr(Bout& bout, const Arguments& arguments, double duration_s, const std
                  {"hand_lost_frames", outcome.hand_lost_frames},
                  {"button_orders", outcome.button_orders},
                  {"frame_work_us", times_json(outcome.frame_work_us)},
+                 {"first_frame_work_us", outcome.first_frame_work_us},
                  {"render_us", times_json(outcome.render_us)},
                  {"wait_us", times_json(outcome.wait_us)}};
     if (!outcome.eye_image.path.empty()) {

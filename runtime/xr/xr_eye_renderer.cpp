@@ -11,6 +11,7 @@ struct XrEyeRenderer::Eye {
     XrSwapchain swapchain = XR_NULL_HANDLE;
     std::vector<GLuint> images;
     GLuint framebuffer = 0, depth = 0;
+    GLuint target = 0, target_color = 0; // the larger render target, when the render size exceeds the swapchain's
 };
 
 XrEyeRenderer::XrEyeRenderer() = default;
@@ -30,8 +31,11 @@ Result<void> XrEyeRenderer::create_context() {
     return {};
 }
 
-Result<void> XrEyeRenderer::create_swapchains(XrHeadset& headset, int width, int height) {
-    m_width = width, m_height = height;
+Result<void> XrEyeRenderer::create_swapchains(XrHeadset& headset, std::array<int, 2> swapchain_size, std::array<int, 2> render_size) {
+    const int width = swapchain_size[0], height = swapchain_size[1];
+    m_swapchain_width = width, m_swapchain_height = height;
+    m_width = render_size[0], m_height = render_size[1];
+    const bool scaled = render_size != swapchain_size;
     std::uint32_t count = 0;
     headset.check(xrEnumerateSwapchainFormats(headset.session(), 0, &count, nullptr), "xrEnumerateSwapchainFormats");
     std::vector<std::int64_t> formats(count);
@@ -62,7 +66,17 @@ Result<void> XrEyeRenderer::create_swapchains(XrHeadset& headset, int width, int
         glGenFramebuffers(1, &eye->framebuffer);
         glGenRenderbuffers(1, &eye->depth);
         glBindRenderbuffer(GL_RENDERBUFFER, eye->depth);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, m_width, m_height);
+        if (scaled) {
+            glGenRenderbuffers(1, &eye->target_color);
+            glBindRenderbuffer(GL_RENDERBUFFER, eye->target_color);
+            glRenderbufferStorage(GL_RENDERBUFFER, GLenum(m_format), m_width, m_height);
+            glGenFramebuffers(1, &eye->target);
+            glBindFramebuffer(GL_FRAMEBUFFER, eye->target);
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, eye->target_color);
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, eye->depth);
+            glBindFramebuffer(GL_FRAMEBUFFER, 0);
+        }
         m_eyes.push_back(std::move(eye));
     }
     QString error;
@@ -83,7 +97,8 @@ bool XrEyeRenderer::render(XrHeadset& headset, const Scene& scene, const XrEyeVi
         if (!headset.check(xrWaitSwapchainImage(eye.swapchain, &wait), "xrWaitSwapchainImage")) return false;
         glBindFramebuffer(GL_FRAMEBUFFER, eye.framebuffer);
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, eye.images[index], 0);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, eye.depth);
+        if (eye.target == 0) glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, eye.depth);
+        else glBindFramebuffer(GL_FRAMEBUFFER, eye.target);
         const ViewProjection view_projection = xr_eye_view_projection(views.pose[std::size_t(e)], views.fov[std::size_t(e)], 0.05f, 100.0f);
         m_renderer.render(scene, view_projection, QRect(0, 0, m_width, m_height));
         if (e == capture_eye && captured) {
@@ -91,6 +106,11 @@ bool XrEyeRenderer::render(XrHeadset& headset, const Scene& scene, const XrEyeVi
             glPixelStorei(GL_PACK_ALIGNMENT, 1);
             glReadPixels(0, 0, m_width, m_height, GL_RGBA, GL_UNSIGNED_BYTE, image.bits());
             *captured = image.mirrored(false, true).convertToFormat(QImage::Format_RGB888);
+        }
+        if (eye.target != 0) {
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, eye.target);
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, eye.framebuffer);
+            glBlitFramebuffer(0, 0, m_width, m_height, 0, 0, m_swapchain_width, m_swapchain_height, GL_COLOR_BUFFER_BIT, GL_LINEAR);
         }
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         XrSwapchainImageReleaseInfo release_info{XR_TYPE_SWAPCHAIN_IMAGE_RELEASE_INFO};
@@ -104,7 +124,7 @@ bool XrEyeRenderer::render(XrHeadset& headset, const Scene& scene, const XrEyeVi
         const XrFovRad& fov = views.fov[std::size_t(e)];
         view.fov = {fov.left, fov.right, fov.up, fov.down};
         view.subImage.swapchain = eye.swapchain;
-        view.subImage.imageRect = {{0, 0}, {m_width, m_height}};
+        view.subImage.imageRect = {{0, 0}, {m_swapchain_width, m_swapchain_height}};
         view.subImage.imageArrayIndex = 0;
     }
     return true;
@@ -118,6 +138,7 @@ void XrEyeRenderer::release() {
     for (const std::unique_ptr<Eye>& eye : m_eyes) {
         glDeleteFramebuffers(1, &eye->framebuffer);
         glDeleteRenderbuffers(1, &eye->depth);
+        if (eye->target != 0) glDeleteFramebuffers(1, &eye->target), glDeleteRenderbuffers(1, &eye->target_color);
         if (eye->swapchain != XR_NULL_HANDLE) xrDestroySwapchain(eye->swapchain);
     }
     m_eyes.clear();

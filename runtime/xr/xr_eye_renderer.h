@@ -25,14 +25,17 @@ public:
     ~XrEyeRenderer();
     // The context, made current (a QGuiApplication must exist). Errors say why there is no OpenGL.
     Result<void> create_context();
-    // The swapchains (width x height per eye) and the scene renderer, once the session exists.
-    Result<void> create_swapchains(XrHeadset& headset, int width, int height);
+    // The swapchains (width x height per eye) and the scene renderer, once the session exists. A render size larger
+    // than the swapchains (a headset's size, benchmarked on a runtime whose images are smaller) draws into a
+    // target of that size per eye, scaled down into the swapchain image.
+    Result<void> create_swapchains(XrHeadset& headset, std::array<int, 2> swapchain_size, std::array<int, 2> render_size);
     // Draws `scene` for both eyes into the swapchain images and describes them in `layer_views` (poses, fovs,
     // image rectangles). `capture_eye` >= 0: that eye's image is read back into `captured` (top row first).
     bool render(XrHeadset& headset, const Scene& scene, const XrEyeViews& views, std::array<XrCompositionLayerProjectionView, 2>& layer_views,
                 int capture_eye = -1, QImage* captured = nullptr);
     void release();
-    std::array<int, 2> size() const { return {m_width, m_height}; }
+    std::array<int, 2> size() const { return {m_width, m_height}; }                       // drawn, per eye
+    std::array<int, 2> swapchain_size() const { return {m_swapchain_width, m_swapchain_height}; }
     long long format() const { return m_format; }
 
 private:
@@ -41,7 +44,7 @@ private:
     QOpenGLContext m_context;
     SceneGlRenderer m_renderer;
     std::vector<std::unique_ptr<Eye>> m_eyes;
-    int m_width = 0, m_height = 0;
+    int m_width = 0, m_height = 0, m_swapchain_width = 0, m_swapchain_height = 0;
     long long m_format = 0;
     bool m_renderer_ready = false;
 };

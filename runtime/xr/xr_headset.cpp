@@ -110,6 +110,7 @@ Result<std::unique_ptr<XrHeadset>> XrHeadset::open() {
         return Error{ErrorCode::unsupported, "the OpenXR system '" + headset->m_system_name + "' has no stereo view configuration"};
     }
     headset->m_recommended_size = {int(view_sizes[0].recommendedImageRectWidth), int(view_sizes[0].recommendedImageRectHeight)};
+    headset->m_max_size = {int(view_sizes[0].maxImageRectWidth), int(view_sizes[0].maxImageRectHeight)};
     return headset;
 }
 

@@ -61,6 +61,7 @@ public:
     const std::string& runtime_name() const { return m_runtime_name; }
     const std::string& system_name() const { return m_system_name; }
     std::array<int, 2> recommended_size() const { return m_recommended_size; }
+    std::array<int, 2> max_size() const { return m_max_size; } // the largest swapchain image per eye
     long long errors() const { return m_errors; }
     const std::vector<std::string>& error_messages() const { return m_error_messages; }
 
@@ -80,7 +81,7 @@ private:
     std::array<XrPath, 2> m_hand_paths{};
     std::array<XrSpace, 2> m_grip_spaces{}, m_aim_spaces{};
     std::string m_runtime_name, m_system_name;
-    std::array<int, 2> m_recommended_size{};
+    std::array<int, 2> m_recommended_size{}, m_max_size{};
     long long m_errors = 0;
     std::vector<std::string> m_error_messages;
 };

@@ -6,6 +6,7 @@
 
 #include <QGuiApplication>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
@@ -119,7 +120,10 @@ int run_xr_bout(Bout& bout, const XrPlayOptions& options, const std::function<vo
     XrEyeRenderer renderer;
     Result<void> ready = renderer.create_context();
     if (ready) ready = headset.create_session();
-    if (ready) ready = renderer.create_swapchains(headset, headset.recommended_size()[0], headset.recommended_size()[1]);
+    // A view size beyond the runtime's largest image is drawn at that size and scaled into the largest image.
+    const std::array<int, 2> render_size = options.view_size[0] > 0 ? options.view_size : headset.recommended_size();
+    const std::array<int, 2> swapchain_size = {std::min(render_size[0], headset.max_size()[0]), std::min(render_size[1], headset.max_size()[1])};
+    if (ready) ready = renderer.create_swapchains(headset, swapchain_size, render_size);
     if (!ready) {
         std::cerr << "kumite play --xr: " << ready.error().message << "\n";
         return 1;
@@ -127,6 +131,7 @@ int run_xr_bout(Bout& bout, const XrPlayOptions& options, const std::function<vo
     std::cerr << "kumite play --xr: " << outcome.runtime << ", " << outcome.system << ", " << renderer.size()[0] << "x" << renderer.size()[1] << " per eye\n";
     outcome.stage_space = headset.stage_space();
     outcome.view_width = renderer.size()[0], outcome.view_height = renderer.size()[1];
+    outcome.swapchain_width = renderer.swapchain_size()[0], outcome.swapchain_height = renderer.swapchain_size()[1];
 
     Session session{headset, outcome, on_state};
     Scene scene;
@@ -188,7 +193,7 @@ int run_xr_bout(Bout& bout, const XrPlayOptions& options, const std::function<vo
             headset_scene_build(bout, scene);
             const auto render_start = Clock::now();
             if (renderer.render(headset, scene, views, layer_views, capture ? 0 : -1, &eye_image)) {
-                outcome.render_us.add(microseconds(render_start, Clock::now()));
+                if (outcome.frames_rendered > 0) outcome.render_us.add(microseconds(render_start, Clock::now()));
                 layer.space = headset.world_space();
                 layer.viewCount = 2;
                 layer.views = layer_views.data();
@@ -214,7 +219,9 @@ int run_xr_bout(Bout& bout, const XrPlayOptions& options, const std::function<vo
         end.layerCount = layer_count;
         end.layers = layer_count ? layers : nullptr;
         if (headset.check(xrEndFrame(headset.session(), &end), "xrEndFrame")) ++outcome.frames_submitted;
-        outcome.frame_work_us.add(microseconds(frame_start, Clock::now()));
+        // Up to the first frame drawn: meshes uploaded, shaders' first use.
+        if (outcome.frames_rendered <= 1) outcome.first_frame_work_us = std::max(outcome.first_frame_work_us, microseconds(frame_start, Clock::now()));
+        else outcome.frame_work_us.add(microseconds(frame_start, Clock::now()));
 
         if (bout_t >= options.duration_s) session.request_exit("duration");
         else if (bout.quit_requested()) session.request_exit("quit_command");

@@ -18,6 +18,7 @@ namespace kumite::view {
 struct XrPlayOptions {
     double duration_s = 30.0;
     std::string eye_image_path; // non-empty: the left eye of the last frame drawn, as PNG (and its geometry in the outcome)
+    std::array<int, 2> view_size{}; // per eye, pixels; 0: the runtime's recommended size (benchmarks ask for a headset's)
 };
 
 struct XrEyeImage {
@@ -32,11 +33,14 @@ struct XrEyeImage {
 struct XrPlayOutcome {
     std::string runtime, system, ended_by;
     bool stage_space = true;
-    int view_width = 0, view_height = 0;
+    int view_width = 0, view_height = 0, swapchain_width = 0, swapchain_height = 0;
     long long frames_waited = 0, frames_submitted = 0, frames_rendered = 0, errors = 0;
     long long head_lost_frames = 0, hand_lost_frames = 0, button_orders = 0;
     std::vector<std::string> states, error_messages;
+    // From xrWaitFrame's return to xrEndFrame's, the eyes' drawing within it, the wait itself; the first frame
+    // (shaders compiled, meshes uploaded) apart.
     ValueHistogram frame_work_us{1.0, 1e7}, render_us{1.0, 1e7}, wait_us{1.0, 1e7};
+    double first_frame_work_us = 0.0;
     XrEyeImage eye_image;
 };
 
