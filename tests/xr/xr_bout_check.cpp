@@ -3,7 +3,7 @@
 // as the user would move, and checks the report, the events and the user track kumite recorded.
 //   xr_bout_check bout KUMITE DB.kdb CAPTURE.bvh OUT_DIR [DURATION_S]
 //     a recorded boxer's head and hands (CaptureUser: placed 1.2 m in front of the fighter, facing it), the head
-//     turning +-0.3 rad, the right controller's A pressed once at 12 s; the supervisor orders a punch every 2 s
+//     turning +-0.3 rad, the right controller's A pressed once at 12 s and untracked from 20 to 21 s; the supervisor orders a punch every 2 s
 //     (predicted aim). DB.kdb `default`: the reference database.
 //   xr_bout_check eye KUMITE DB.kdb - OUT_DIR
 //     a still user 2.5 m away; the left eye's image must show the fighter where its joints project.
@@ -131,7 +131,8 @@ int main(int argc, char** argv) {
         data.head.center = remote_pose(turn, eyes);
         data.left.pose = remote_pose(Eigen::Quaternionf::Identity(), sample.left.cast<float>());
         data.right.pose = remote_pose(Eigen::Quaternionf::Identity(), sample.right.cast<float>());
-        data.left.active = data.right.active = true;
+        data.left.active = true;
+        data.right.active = !(bout && t > 20.0 && t < 21.0); // the right controller loses tracking for a second
         data.right.a_click = bout && t > 12.0 && t < 12.3;
         // What is sent, in the float precision it is sent with.
         sample.head = (Eigen::Vector3f(data.head.center.x, data.head.center.y, data.head.center.z) + turn * Eigen::Vector3f(0, 0, k_head_centre_behind_eyes_m)).cast<double>();
@@ -209,6 +210,8 @@ int main(int argc, char** argv) {
         check(defences >= 1 && defended >= 1, "the boxer's punches are defended (" + std::to_string(defences) + " blocks or slips, " +
                                                  std::to_string(defended) + " punches blocked or slipped)");
         check(xr["button_orders"].get<long long>() >= 1, "the right controller's A button ordered a punch");
+        const long long hand_lost = xr["hand_lost_frames"];
+        check(hand_lost >= 10 && hand_lost <= 40, "the right controller's second out of tracking is a lost hand (" + std::to_string(hand_lost) + " frames)");
     } else {
         const nlohmann::json& eye = xr["eye_image"];
         const QImage image(QString::fromStdString(image_path));
