@@ -63,6 +63,10 @@ int play_xr(Bout& bout, const Arguments& arguments, double duration_s, const std
                                   {"eye_pose", e.eye_pose}, {"fov_rad", e.fov_rad}, {"fighter_head", e.fighter_head},
                                   {"fighter_chest", e.fighter_chest}, {"fighter_pelvis", e.fighter_pelvis}};
     }
+    if (outcome.ended_by == "runtime_lost") {
+        std::cerr << "kumite play --xr: the OpenXR runtime was lost after " << outcome.frames_waited << " frames (" << bout.now_s()
+                  << " s): the bout ends here, its events and report are written\n";
+    }
     if (outcome.errors > 0) std::cerr << "kumite play --xr: " << outcome.errors << " OpenXR call(s) failed, first: " << outcome.error_messages.front() << "\n";
     return 0;
 }
