@@ -55,10 +55,12 @@ struct Session {
     const std::function<void(double, const char*)>& on_state;
     XrSessionState state = XR_SESSION_STATE_UNKNOWN;
     bool running = false, exit_requested = false, done = false;
+    Clock::time_point exit_requested_at{};
 
     void request_exit(const char* why) {
         if (exit_requested) return;
         exit_requested = true;
+        exit_requested_at = Clock::now();
         if (outcome.ended_by.empty()) outcome.ended_by = why;
         if (!running || !headset.check(xrRequestExitSession(headset.session()), "xrRequestExitSession")) done = true;
     }
@@ -146,6 +148,11 @@ int run_xr_bout(Bout& bout, const XrPlayOptions& options, const std::function<vo
     while (!session.done) {
         session.poll(bout_t);
         if (session.done) break;
+        // A runtime that does not end the session within 5 s of the exit request (frames or not) is left.
+        if (session.exit_requested && std::chrono::duration<double>(Clock::now() - session.exit_requested_at).count() > 5.0) {
+            outcome.ended_by += "_exit_unanswered";
+            break;
+        }
         if (!session.running) {
             // Before READY (or after STOPPING): no frames. A runtime that never starts the session is given 20 s.
             if (std::chrono::duration<double>(Clock::now() - started).count() > 20.0 && outcome.frames_waited == 0) {
@@ -226,8 +233,6 @@ int run_xr_bout(Bout& bout, const XrPlayOptions& options, const std::function<vo
         if (bout_t >= options.duration_s) session.request_exit("duration");
         else if (bout.quit_requested()) session.request_exit("quit_command");
         else if (user.quit_pressed) session.request_exit("quit_button");
-        // A runtime that does not answer the exit request within 5 s of bout time is left.
-        if (session.exit_requested && bout_t >= options.duration_s + 5.0) break;
     }
     renderer.release();
     outcome.errors = headset.errors();
