@@ -59,7 +59,8 @@ const CommandSpec& play_spec() {
          {"headless", "", "no window"},
          {"xr", "", "in an OpenXR headset (the system's runtime; XR_RUNTIME_JSON honoured): its head and grips are the user, both\n"
                     "eyes drawn into the runtime's swapchains; runs --duration S of bout time (README \"In the headset\")"},
-         {"xr-view-size", "WxH", "with --xr: the swapchain size per eye (default: the runtime's recommended size)"},
+         {"xr-view-size", "WxH", "with --xr: the size drawn per eye (default: the runtime's recommended size; beyond its largest image,\n"
+                                    "drawn at this size and scaled into it)"},
          {"xr-eye-image", "OUT.png", "with --xr: the left eye's image near the end of the bout (its geometry in the report's xr.eye_image)"},
          {"screenshot", "OUT.png", "viewer: save the window after --duration seconds and close"},
          {"viewer-config", "FILE.json", "the wall screen's corners, the eye separation, stereo and camera mode (see runtime/player/README.md)"},
