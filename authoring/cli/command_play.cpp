@@ -228,7 +228,7 @@ int run_play(int argc, char** argv) {
     if (const std::optional<std::string> path = arguments.value("events")) {
         if (Result<void> opened = events_out.open(*path, "the events file"); !opened) return input_error(opened.error().message);
     }
-    const PlaySetup setup{arguments.value("tracker").value_or("simulate:still"), database_path->string(), *seed};
+    const PlaySetup setup{xr ? std::string("xr") : arguments.value("tracker").value_or("simulate:still"), database_path->string(), *seed};
     write_event(bout_start_json(bout, setup));
     if (const std::optional<nlohmann::json> source = tracker_source_json(bout)) {
         nlohmann::json line = {{"t", 0.0}, {"type", "tracker_source"}};
