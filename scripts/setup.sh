@@ -2,14 +2,18 @@
 # Installs the Debian packages kumite needs, only those missing. Safe to run again.
 #   scripts/setup.sh          build dependencies
 #   scripts/setup.sh --test   also what the tests use (Blender for the BVH import check, clang for fuzzing,
-#                             Xvfb and Mesa for the viewer checks)
+#                             Xvfb and Mesa for the viewer checks, what Monado needs to build for the --xr tests)
 set -euo pipefail
 
 packages=(build-essential cmake g++ libeigen3-dev nlohmann-json3-dev libtinygltf-dev catch2 python3 libopenexr-dev libflann-dev
           qt6-base-dev qt6-qpa-plugins libqt6opengl6-dev libgl-dev libxkbcommon-dev fonts-dejavu-core
-          pybind11-dev python3-dev python3-numpy)
+          pybind11-dev python3-dev python3-numpy libopenxr-dev libopenxr-loader1 libx11-dev)
 if [[ "${1:-}" == "--test" ]]; then
-  packages+=(blender python3-pytest python3-matplotlib clang-14 libfuzzer-14-dev openexr xvfb xauth libgl1-mesa-dri)
+  packages+=(blender python3-pytest python3-matplotlib clang-14 libfuzzer-14-dev openexr xvfb xauth libgl1-mesa-dri
+            # Monado, the OpenXR runtime the --xr tests run against (scripts/build_monado.sh), and Vulkan on the CPU
+            # (lavapipe: Monado allocates the swapchains with Vulkan even for an OpenGL client)
+            ninja-build pkg-config libudev-dev glslang-tools libvulkan-dev libegl-dev libx11-xcb-dev libxcb-randr0-dev
+            libxrandr-dev mesa-vulkan-drivers)
 fi
 
 missing=()

@@ -21,10 +21,14 @@ check_folder(core "[<\"](Q[A-Za-z]+|Imf[A-Za-z]*|OpenEXR/|kumite/formats/|kumite
   "core uses Eigen and the standard library only")
 check_folder(formats "[<\"](Q[A-Za-z]+|kumite/runtime/|kumite/authoring/)"
   "formats depends on core only; no Qt")
-check_folder(runtime/include "[<\"](Q[A-Za-z]+|Imf[A-Za-z]*|OpenEXR/|kumite/authoring/)"
-  "libkumite_runtime has no Qt and no OpenEXR")
-check_folder(runtime/src "[<\"](Q[A-Za-z]+|Imf[A-Za-z]*|OpenEXR/|kumite/authoring/)"
-  "libkumite_runtime has no Qt and no OpenEXR")
+check_folder(runtime/include "[<\"](Q[A-Za-z]+|Imf[A-Za-z]*|OpenEXR/|openxr/|kumite/authoring/)"
+  "libkumite_runtime has no Qt, no OpenEXR and no OpenXR")
+check_folder(runtime/src "[<\"](Q[A-Za-z]+|Imf[A-Za-z]*|OpenEXR/|openxr/|kumite/authoring/)"
+  "libkumite_runtime has no Qt, no OpenEXR and no OpenXR")
+check_folder(core "[<\"]openxr/" "core knows no headset")
+check_folder(formats "[<\"]openxr/" "formats knows no headset")
+check_folder(runtime/xr "[<\"](Imf[A-Za-z]*|OpenEXR/|kumite/authoring/)"
+  "the headset path (Qt, OpenXR) never uses authoring or OpenEXR")
 check_folder(runtime/player "[<\"](Imf[A-Za-z]*|OpenEXR/|kumite/authoring/)"
   "the player's window may use Qt, never authoring or OpenEXR")
 

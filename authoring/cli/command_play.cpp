@@ -6,6 +6,7 @@
 #include "partial_file.h"
 #include "play_motion.h"
 #include "play_output.h"
+#include "play_xr.h"
 #include "session_html.h"
 #include "session_log.h"
 #include "character_catalog.h"
@@ -56,6 +57,11 @@ const CommandSpec& play_spec() {
          {"tracker-config", "FILE.json", "the room: bind address, room-to-world transform, room bounds (dtrack)"},
          {"commands", "SOURCE", "stdin, tcp:PORT (127.0.0.1) or script:FILE ('<time_s> <command>' per line)"},
          {"headless", "", "no window"},
+         {"xr", "", "in an OpenXR headset (the system's runtime; XR_RUNTIME_JSON honoured): its head and grips are the user, both\n"
+                    "eyes drawn into the runtime's swapchains; runs --duration S of bout time (README \"In the headset\")"},
+         {"xr-view-size", "WxH", "with --xr: the size drawn per eye (default: the runtime's recommended size; beyond its largest image,\n"
+                                    "drawn at this size and scaled into it)"},
+         {"xr-eye-image", "OUT.png", "with --xr: the left eye's image near the end of the bout (its geometry in the report's xr.eye_image)"},
          {"screenshot", "OUT.png", "viewer: save the window after --duration seconds and close"},
          {"viewer-config", "FILE.json", "the wall screen's corners, the eye separation, stereo and camera mode (see runtime/player/README.md)"},
          {"duration", "S", "seconds to run (default 30)"},
@@ -133,7 +139,7 @@ int run_play(int argc, char** argv) {
             return usage_error(play_spec(), "--duration must be seconds, more than 0, not '" + *text + "'");
         }
     }
-    const bool want_viewer = !arguments.has("headless");
+    const bool want_viewer = !arguments.has("headless") && !arguments.has("xr"); // --xr: the headset is the view
     if (want_viewer && !display_present()) {
         std::cerr << "kumite play: no display (DISPLAY and WAYLAND_DISPLAY are unset): running headless\n";
     }
@@ -152,8 +158,12 @@ int run_play(int argc, char** argv) {
         if (!read) return input_error(read.error().message);
         dtrack_config = *read;
     }
+    const bool xr = arguments.has("xr");
+    if (xr && arguments.has("tracker")) return usage_error(play_spec(), "--xr: the headset is the tracker, leave out --tracker");
+    if ((arguments.has("xr-eye-image") || arguments.has("xr-view-size")) && !xr) return usage_error(play_spec(), "--xr-eye-image and --xr-view-size need --xr");
     Result<std::unique_ptr<HeadTracker>> tracker =
-        HeadTracker::open(arguments.value("tracker").value_or("simulate:still"), dtrack_config, static_cast<std::uint64_t>(*seed));
+        xr ? Result<std::unique_ptr<HeadTracker>>(HeadTracker::fed())
+           : HeadTracker::open(arguments.value("tracker").value_or("simulate:still"), dtrack_config, static_cast<std::uint64_t>(*seed));
     if (!tracker) {
         return tracker.error().code == ErrorCode::invalid ? usage_error(play_spec(), tracker.error().message) : input_error(tracker.error().message);
     }
@@ -226,7 +236,7 @@ int run_play(int argc, char** argv) {
     if (const std::optional<std::string> path = arguments.value("events")) {
         if (Result<void> opened = events_out.open(*path, "the events file"); !opened) return input_error(opened.error().message);
     }
-    const PlaySetup setup{arguments.value("tracker").value_or("simulate:still"), database_path->string(), *seed};
+    const PlaySetup setup{xr ? std::string("xr") : arguments.value("tracker").value_or("simulate:still"), database_path->string(), *seed};
     write_event(bout_start_json(bout, setup));
     if (const std::optional<nlohmann::json> source = tracker_source_json(bout)) {
         nlohmann::json line = {{"t", 0.0}, {"type", "tracker_source"}};
@@ -249,9 +259,12 @@ int run_play(int argc, char** argv) {
         for (const nlohmann::json& line : samples) write_event(line);
     };
 
-    const bool realtime = arguments.has("realtime") || bout.live() || viewer;
+    const bool realtime = arguments.has("realtime") || bout.live() || viewer || xr;
     view::PlayerRunOutcome viewer_outcome;
-    if (viewer) {
+    nlohmann::json xr_report;
+    if (xr) {
+        if (const int status = play_xr(bout, arguments, duration_s, after_step, write_event, xr_report); status != 0) return status;
+    } else if (viewer) {
         view::PlayerRunOptions run;
         run.duration_s = duration_s;
         run.stop_after_duration = arguments.has("duration") || arguments.has("screenshot");
@@ -288,6 +301,7 @@ int run_play(int argc, char** argv) {
     report["motion"] = motion;
     report["realtime"] = realtime;
     report["viewer"] = viewer;
+    if (xr) report["xr"] = xr_report;
     if (viewer) report["viewer_drawing"] = {{"renderer", viewer_outcome.renderer}, {"body_meshes_uploaded", viewer_outcome.body_mesh_uploads}};
     if (const std::optional<std::string> path = arguments.value("report")) {
         if (Result<void> written = write_file_atomically(*path, report.dump(2) + "\n"); !written) return input_error(written.error().message);
