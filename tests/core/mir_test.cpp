@@ -153,9 +153,10 @@ TEST_CASE("retarget: locomotion, strikes and a CMU capture onto all five charact
             CHECK(report.bone_length_error_m <= 1e-4);
             CHECK(report.foot_drift_m <= 0.02);
             CHECK(report.floor_penetration_m <= 0.01);
-            // Planted feet stay exactly where they landed while the leg reaches them; the knees take the difference
-            // of hip geometry, so the legs' extension may differ from the source's a little more.
-            CHECK(report.limb_extension_error <= 0.02);
+            // Planted feet stay exactly where they landed while the legs reach them; with both down, the hips take
+            // the shift from which both legs keep (nearly) the source's extension (it was 0.015 on the giant's
+            // punch_normal_002 with the feet's mean shift).
+            CHECK(report.limb_extension_error <= 0.01);
         }
     }
 }
