@@ -15,13 +15,16 @@ import re
 import struct
 import sys
 
-COLOURS = {  # linear RGBA
-    "kid": (0.90, 0.45, 0.10, 1.0),
-    "scout": (0.20, 0.60, 0.25, 1.0),
-    "brawler": (0.70, 0.12, 0.10, 1.0),
-    "runner": (0.15, 0.35, 0.80, 1.0),
-    "giant": (0.50, 0.25, 0.65, 1.0),
+# Linear RGBA, as glTF means them: each the colour the viewer showed before it lit in linear light (0.90, 0.45,
+# 0.10 for the kid, ...), squared, so that the viewer (which shows linear colours with gamma 2) shows the same ones.
+DISPLAY_COLOURS = {
+    "kid": (0.90, 0.45, 0.10),
+    "scout": (0.20, 0.60, 0.25),
+    "brawler": (0.70, 0.12, 0.10),
+    "runner": (0.15, 0.35, 0.80),
+    "giant": (0.50, 0.25, 0.65),
 }
+COLOURS = {name: tuple(round(c * c, 4) for c in rgb) + (1.0,) for name, rgb in DISPLAY_COLOURS.items()}
 UNITS = {"cm": 0.01, "m": 1.0}
 
 # Capsule radius as a fraction of the standing height, by the part a bone's joint drives (first match of the

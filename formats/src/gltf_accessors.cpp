@@ -227,13 +227,17 @@ Result<void> read_skinned_primitives(const tinygltf::Model& model, int skin_inde
                 if (vertices % 3 != 0) return fail(where + ": not a list of triangles");
                 for (std::size_t v = 0; v < vertices; ++v) mesh.triangles.push_back(static_cast<std::uint32_t>(first_vertex + v));
             }
-            if (!colour_set && primitive.material >= 0 && primitive.material < static_cast<int>(model.materials.size())) {
+            // Each primitive's material colour on its vertices (a body of several materials: skin, clothes, hair).
+            std::array<float, 4> colour = {0.8f, 0.8f, 0.8f, 1.0f};
+            if (primitive.material >= 0 && primitive.material < static_cast<int>(model.materials.size())) {
                 const std::vector<double>& factor = model.materials[primitive.material].pbrMetallicRoughness.baseColorFactor;
                 if (factor.size() == 4 && std::all_of(factor.begin(), factor.end(), [](double v) { return std::isfinite(v); })) {
-                    for (int c = 0; c < 4; ++c) mesh.base_colour[c] = static_cast<float>(std::clamp(factor[c], 0.0, 1.0));
+                    for (int c = 0; c < 4; ++c) colour[c] = static_cast<float>(std::clamp(factor[c], 0.0, 1.0));
+                    if (!colour_set) mesh.base_colour = colour;
                     colour_set = true;
                 }
             }
+            mesh.colours.resize(mesh.positions.size(), {colour[0], colour[1], colour[2]});
         }
     }
     return {};

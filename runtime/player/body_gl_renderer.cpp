@@ -1,5 +1,7 @@
 #include "body_gl_renderer.h"
 
+#include "kumite/core/skinned_mesh_facing.h"
+
 #include <QMatrix4x4>
 
 #include <algorithm>
@@ -12,10 +14,12 @@ layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 normal;
 layout(location = 2) in uvec4 joints;
 layout(location = 3) in vec4 weights;
+layout(location = 4) in vec3 colour_in; // linear, the vertex's material
 uniform sampler2D skin_texture; // row j: joint j's skin matrix, one column per texel
 uniform mat4 view;
 uniform mat4 view_projection;
 out vec3 normal_eye;
+out vec3 colour;
 mat4 skin_of(uint joint) {
     int row = int(joint);
     return mat4(texelFetch(skin_texture, ivec2(0, row), 0), texelFetch(skin_texture, ivec2(1, row), 0),
@@ -24,30 +28,42 @@ mat4 skin_of(uint joint) {
 void main() {
     mat4 skin = weights.x * skin_of(joints.x) + weights.y * skin_of(joints.y) + weights.z * skin_of(joints.z) + weights.w * skin_of(joints.w);
     normal_eye = mat3(view) * normalize(mat3(skin) * normal);
+    colour = colour_in;
     gl_Position = view_projection * (skin * vec4(position, 1.0));
 })";
 const char* k_skinned_fragment = R"(#version 330 core
 in vec3 normal_eye;
-uniform vec3 color;
+in vec3 colour;
 out vec4 fragment;
 void main() {
     vec3 n = normalize(normal_eye);
     if (!gl_FrontFacing) n = -n;
     vec3 light = normalize(vec3(-0.3, 0.6, 1.0));  // the capsules' head light
     float diffuse = max(dot(n, light), 0.0);
-    float rim = pow(1.0 - max(n.z, 0.0), 3.0);
-    float specular = pow(max(dot(reflect(-light, n), vec3(0.0, 0.0, 1.0)), 0.0), 24.0);
-    fragment = vec4(color * (0.28 + 0.72 * diffuse) + vec3(0.2) * specular + color * 0.25 * rim, 1.0);
+    // Powers by multiplication: a pow() per pixel is what a software renderer (a headset's eyes drawn on the CPU)
+    // spends most on.
+    float edge = 1.0 - max(n.z, 0.0);
+    float rim = edge * edge * edge;
+    float s = max(dot(reflect(-light, n), vec3(0.0, 0.0, 1.0)), 0.0);
+    float s2 = s * s, s4 = s2 * s2, s8 = s4 * s4;
+    float specular = s8 * s8 * s8; // s^24
+    // Lit in linear light (glTF's colours are linear), written as the screen shows it: gamma 2 (a square root,
+    // close to sRGB's curve).
+    vec3 lit = colour * (0.28 + 0.72 * diffuse) + vec3(0.04) * specular + colour * 0.25 * rim;
+    fragment = vec4(sqrt(lit), 1.0);
 })";
+
 
 } // namespace
 
+// A SkinnedMesh on the GPU, and how its triangles face.
 struct BodyGlRenderer::Uploaded {
     std::shared_ptr<const SkinnedMesh> mesh; // kept alive: its address keys the upload
     QOpenGLVertexArrayObject vao;
     QOpenGLBuffer vertices{QOpenGLBuffer::VertexBuffer};
     QOpenGLBuffer indices{QOpenGLBuffer::IndexBuffer};
     int index_count = 0;
+    GLenum cull = GL_NONE; // GL_BACK or GL_FRONT when the winding is consistent, else nothing culled
 };
 
 BodyGlRenderer::BodyGlRenderer() = default;
@@ -69,32 +85,30 @@ bool BodyGlRenderer::initialize(QString& error) {
     return true;
 }
 
-BodyGlRenderer::Uploaded& BodyGlRenderer::uploaded(const std::shared_ptr<const SkinnedMesh>& mesh) {
-    for (const auto& entry : m_meshes) {
-        if (entry->mesh == mesh) return *entry;
-    }
-    // Interleaved: position (3 floats), normal (3 floats), joints (4 u16), weights (4 floats): 48 bytes.
+void BodyGlRenderer::upload(const SkinnedMesh& mesh, Uploaded& gpu) {
+    // Interleaved: position (3 floats), normal (3 floats), joints (4 u16), weights (4 floats), colour (3 floats).
     struct Vertex {
         float position[3], normal[3];
         std::uint16_t joints[4];
         float weights[4];
+        float colour[3];
     };
-    std::vector<Vertex> vertices(mesh->vertex_count());
+    std::vector<Vertex> vertices(mesh.vertex_count());
+    const bool coloured = mesh.colours.size() == mesh.vertex_count();
     for (std::size_t v = 0; v < vertices.size(); ++v) {
-        for (int c = 0; c < 3; ++c) vertices[v].position[c] = mesh->positions[v][c], vertices[v].normal[c] = mesh->normals[v][c];
-        for (int k = 0; k < 4; ++k) vertices[v].joints[k] = mesh->joints[v][k], vertices[v].weights[k] = mesh->weights[v][k];
+        for (int c = 0; c < 3; ++c) vertices[v].position[c] = mesh.positions[v][c], vertices[v].normal[c] = mesh.normals[v][c];
+        for (int k = 0; k < 4; ++k) vertices[v].joints[k] = mesh.joints[v][k], vertices[v].weights[k] = mesh.weights[v][k];
+        for (int c = 0; c < 3; ++c) vertices[v].colour[c] = coloured ? mesh.colours[v][std::size_t(c)] : mesh.base_colour[std::size_t(c)];
     }
-    auto entry = std::make_unique<Uploaded>();
-    entry->mesh = mesh;
-    entry->vao.create();
-    entry->vao.bind();
-    entry->vertices.create();
-    entry->vertices.bind();
-    entry->vertices.allocate(vertices.data(), int(vertices.size() * sizeof(Vertex)));
-    entry->indices.create();
-    entry->indices.bind();
-    entry->indices.allocate(mesh->triangles.data(), int(mesh->triangles.size() * sizeof(std::uint32_t)));
-    entry->index_count = int(mesh->triangles.size());
+    gpu.vao.create();
+    gpu.vao.bind();
+    gpu.vertices.create();
+    gpu.vertices.bind();
+    gpu.vertices.allocate(vertices.data(), int(vertices.size() * sizeof(Vertex)));
+    gpu.indices.create();
+    gpu.indices.bind();
+    gpu.indices.allocate(mesh.triangles.data(), int(mesh.triangles.size() * sizeof(std::uint32_t)));
+    gpu.index_count = int(mesh.triangles.size());
     glEnableVertexAttribArray(0);
     glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, position)));
     glEnableVertexAttribArray(1);
@@ -103,7 +117,22 @@ BodyGlRenderer::Uploaded& BodyGlRenderer::uploaded(const std::shared_ptr<const S
     glVertexAttribIPointer(2, 4, GL_UNSIGNED_SHORT, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, joints)));
     glEnableVertexAttribArray(3);
     glVertexAttribPointer(3, 4, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, weights)));
-    entry->vao.release();
+    glEnableVertexAttribArray(4);
+    glVertexAttribPointer(4, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex), reinterpret_cast<void*>(offsetof(Vertex, colour)));
+    gpu.vao.release();
+}
+
+BodyGlRenderer::Uploaded& BodyGlRenderer::uploaded(const std::shared_ptr<const SkinnedMesh>& mesh) {
+    for (const auto& entry : m_meshes) {
+        if (entry->mesh == mesh) return *entry;
+    }
+    auto entry = std::make_unique<Uploaded>();
+    entry->mesh = mesh;
+    upload(*mesh, *entry);
+    // Back faces are culled only where the winding agrees with the normals nearly everywhere (half the triangles
+    // rasterised); a mix (an open or hand-edited mesh) is drawn two-sided.
+    const double front = skinned_mesh_front_facing_share(*mesh);
+    entry->cull = front > 0.98 ? GL_BACK : front < 0.02 ? GL_FRONT : GL_NONE;
     ++m_uploads;
     m_meshes.push_back(std::move(entry));
     return *m_meshes.back();
@@ -122,10 +151,16 @@ void BodyGlRenderer::draw(const std::vector<SkinnedBody>& bodies, const Eigen::M
         if (!body.mesh || body.skin.size() != body.mesh->bind_to_rest.size() || body.skin.empty()) continue;
         Uploaded& mesh = uploaded(body.mesh);
         // Eigen matrices are column-major: each joint's 16 floats are its 4 columns, one RGBA texel each.
-        glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 4, GLsizei(body.skin.size()), 0, GL_RGBA, GL_FLOAT, body.skin.data());
-        m_program.setUniformValue("color", QVector3D(body.color.x(), body.color.y(), body.color.z()));
+        // The texture's storage is made again only when a body has more joints than it holds.
+        if (int(body.skin.size()) > m_skin_rows) {
+            m_skin_rows = int(body.skin.size());
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 4, m_skin_rows, 0, GL_RGBA, GL_FLOAT, nullptr);
+        }
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 4, GLsizei(body.skin.size()), GL_RGBA, GL_FLOAT, body.skin.data());
+        if (mesh.cull != GL_NONE) glEnable(GL_CULL_FACE), glCullFace(mesh.cull);
         mesh.vao.bind();
         glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
+        glDisable(GL_CULL_FACE);
     }
     glBindVertexArray(0);
     glBindTexture(GL_TEXTURE_2D, 0);
@@ -136,6 +171,7 @@ void BodyGlRenderer::release() {
     for (const auto& entry : m_meshes) entry->vao.destroy(), entry->vertices.destroy(), entry->indices.destroy();
     m_meshes.clear();
     if (m_skin_texture != 0) glDeleteTextures(1, &m_skin_texture);
+    m_skin_rows = 0;
     m_skin_texture = 0;
     m_ready = false;
 }

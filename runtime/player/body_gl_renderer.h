@@ -1,8 +1,11 @@
 #pragma once
 // Skinned bodies drawn with OpenGL 3.3 core: linear-blend skinning in the vertex shader, the skin matrices in a
-// float texture (4 texels a joint, one row per joint: any joint count), lit like the capsules. Each SkinnedMesh
-// is uploaded once (vertex and index buffers kept while the mesh is alive) and shared by every body drawn with it;
-// per body and frame only its skin matrices go to the GPU. Lives inside a current context, like SceneGlRenderer.
+// float texture (4 texels a joint, one row per joint: any joint count), each vertex in its material's colour, lit
+// like the capsules. Each SkinnedMesh is uploaded once (vertex and index buffers kept while the mesh is alive) and
+// shared by every body drawn with it; per body and frame only its skin matrices go to the GPU. Back faces are
+// culled when the mesh's winding says which they are (skinned_mesh_facing.h). Lit in linear light and written
+// with gamma 2, with no pow() per pixel: in software (a headset's eyes drawn on the CPU) that was half the cost.
+// Lives inside a current context, like SceneGlRenderer.
 
 #include "scene.h"
 
@@ -29,9 +32,11 @@ public:
 private:
     struct Uploaded;
     Uploaded& uploaded(const std::shared_ptr<const SkinnedMesh>& mesh);
+    void upload(const SkinnedMesh& mesh, Uploaded& gpu);
 
     QOpenGLShaderProgram m_program;
     GLuint m_skin_texture = 0;
+    int m_skin_rows = 0; // joints the skin texture holds
     std::vector<std::unique_ptr<Uploaded>> m_meshes;
     int m_uploads = 0;
     bool m_ready = false;

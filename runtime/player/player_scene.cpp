@@ -51,7 +51,6 @@ void add_skinned_body(Scene& scene, const std::shared_ptr<const SkinnedMesh>& me
     body.mesh = mesh;
     body.skin.resize(joints);
     skin_matrices(body.skin, *mesh, positions, rotations);
-    body.color = Color(mesh->base_colour[0], mesh->base_colour[1], mesh->base_colour[2]);
     scene.bodies.push_back(std::move(body));
 }
 

@@ -26,8 +26,7 @@ struct Capsule {
 // that points to it; `skin` are this frame's skin matrices (kumite/core/skinned_mesh.h), one per joint.
 struct SkinnedBody {
     std::shared_ptr<const SkinnedMesh> mesh;
-    std::vector<Eigen::Matrix4f> skin;
-    Color color{0.8f, 0.8f, 0.8f};
+    std::vector<Eigen::Matrix4f> skin; // the mesh's own colours are on its vertices
 };
 
 struct Sphere {

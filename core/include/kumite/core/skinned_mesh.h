@@ -24,7 +24,8 @@ struct SkinnedMesh {
     std::vector<std::array<std::uint16_t, 4>> joints;    // [vertex] skeleton joint indices
     std::vector<std::array<float, 4>> weights;           // [vertex] sum 1
     std::vector<std::uint32_t> triangles;                // 3 per triangle
-    std::array<float, 4> base_colour{0.8f, 0.8f, 0.8f, 1.0f}; // linear RGBA
+    std::array<float, 4> base_colour{0.8f, 0.8f, 0.8f, 1.0f}; // linear RGBA (the first material's)
+    std::vector<std::array<float, 3>> colours;          // [vertex] linear RGB of its primitive's material; empty: base_colour
     std::vector<Eigen::Matrix4f> bind_to_rest;           // [joint] see above
 
     std::size_t vertex_count() const { return positions.size(); }
