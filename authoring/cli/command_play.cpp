@@ -32,6 +32,9 @@
 
 namespace kumite::cli {
 
+// The headset's default fighter (CC0, data/bodies/README.md).
+constexpr const char* k_xr_default_body = "data/bodies/quaternius-adventurer/Adventurer.glb";
+
 const CommandSpec& play_spec() {
     static const CommandSpec spec{
         "play",
@@ -47,7 +50,7 @@ const CommandSpec& play_spec() {
         "(keys listed on screen; it runs until closed, or for --duration when given). Without DB.kdb: $KUMITE_DB, else the reference annotations baked once\n"
         "and cached (baked again when they or their captures change).",
         0, 1,
-        {{"character", "NAME", "the starting character (default: the first of data/characters)"},
+        {{"character", "NAME", "the starting character (default: the first of data/characters; with --xr the human body of data/bodies)"},
          {"fighters", "N", "fighters side by side against the same user (default 1)"},
          {"tracker", "SOURCE", "dtrack:PORT[:BODY] (no BODY: the only 6d body, else the 3d markers' centroid), dtrack:PORT:HEAD,LEFT,RIGHT\n"
                               "(the hands too: 6d body or 3d marker ids), replay:FILE.csv (t,x,y,z[,lx,ly,lz,rx,ry,rz]), or\n"
@@ -191,7 +194,15 @@ int run_play(int argc, char** argv) {
     if (!database) return input_error(database.error().message);
     const std::optional<std::string> folder = arguments.value("characters-dir");
     const std::filesystem::path characters_dir = folder ? std::filesystem::path(*folder) : default_characters_dir();
-    Result<BoutCast> cast = load_bout_cast(characters_dir, arguments.value("character").value_or(""));
+    // In the headset the fighter is a person by default: the CC0 human body shipped in data/bodies (any character
+    // can still be named); on the desktop the first shipped mannequin.
+    std::string character = arguments.value("character").value_or("");
+    if (character.empty() && xr) {
+        const std::filesystem::path human = locate_data_folder("KUMITE_XR_BODY", k_xr_default_body);
+        if (character_file_exists(human)) character = human.string();
+        else std::cerr << "kumite play --xr: the default human body " << human.string() << " is missing: the first shipped character instead\n";
+    }
+    Result<BoutCast> cast = load_bout_cast(characters_dir, character);
     if (!cast) return cast.error().code == ErrorCode::invalid ? usage_error(play_spec(), cast.error().message) : input_error(cast.error().message);
     BoutOptions options;
     options.fighters = static_cast<int>(*fighters_count);

@@ -110,7 +110,8 @@ int main(int argc, char** argv) {
         std::ofstream orders(orders_path);
         for (double t = 4.0; t < duration_s - 1.0; t += 2.0) orders << t << " punch\n";
     }
-    std::vector<std::string> command = {kumite, "play", "--xr", "--duration", std::to_string(duration_s), "--character", "brawler",
+    // The headset's default fighter: the human body of data/bodies.
+    std::vector<std::string> command = {kumite, "play", "--xr", "--duration", std::to_string(duration_s),
                                         "--report", report_path, "--events", events_path, "--record-user", user_path};
     if (db != "default") command.insert(command.begin() + 2, db); // default: the reference database (baked once, cached)
     // Predicted aim: a boxer never holds still, the strike goes where the head is heading.
