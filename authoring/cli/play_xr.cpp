@@ -56,6 +56,9 @@ int play_xr(Bout& bout, const Arguments& arguments, double duration_s, const std
                  {"frame_work_us", times_json(outcome.frame_work_us)},
                  {"first_frame_work_us", outcome.first_frame_work_us},
                  {"render_us", times_json(outcome.render_us)},
+                 {"steps_us", times_json(outcome.steps_us)},
+                 {"scene_us", times_json(outcome.scene_us)},
+                 {"end_frame_us", times_json(outcome.end_frame_us)},
                  {"wait_us", times_json(outcome.wait_us)}};
     if (!outcome.eye_image.path.empty()) {
         const view::XrEyeImage& e = outcome.eye_image;

@@ -186,21 +186,27 @@ int run_xr_bout(Bout& bout, const XrPlayOptions& options, const std::function<vo
         // The bout at its own rate up to the frame's display time (a 20 Hz runtime gets three steps a frame, 90 Hz
         // about two in three frames).
         // As headless: steps at 0, 1/rate, ... before the duration.
+        const auto steps_start = Clock::now();
         while (double(next_step) / bout.rate_hz() <= bout_t && double(next_step) / bout.rate_hz() < options.duration_s - 1e-9 &&
                !bout.quit_requested() && !session.exit_requested) {
             bout.step(double(next_step) / bout.rate_hz());
             ++next_step;
             after_step();
         }
+        const auto steps_end = Clock::now();
 
         std::uint32_t layer_count = 0;
         XrCompositionLayerProjection layer{XR_TYPE_COMPOSITION_LAYER_PROJECTION};
         if (frame.shouldRender && headset.locate_views(frame.predictedDisplayTime, views)) {
             const bool capture = !options.eye_image_path.empty() && outcome.eye_image.path.empty() && bout_t >= options.duration_s - 1.0;
+            const auto scene_start = Clock::now();
             headset_scene_build(bout, scene);
             const auto render_start = Clock::now();
             if (renderer.render(headset, scene, views, layer_views, capture ? 0 : -1, &eye_image)) {
-                if (outcome.frames_rendered > 0) outcome.render_us.add(microseconds(render_start, Clock::now()));
+                if (outcome.frames_rendered > 0) {
+                    outcome.render_us.add(microseconds(render_start, Clock::now()));
+                    outcome.scene_us.add(microseconds(scene_start, render_start));
+                }
                 layer.space = headset.world_space();
                 layer.viewCount = 2;
                 layer.views = layer_views.data();
@@ -225,10 +231,17 @@ int run_xr_bout(Bout& bout, const XrPlayOptions& options, const std::function<vo
         end.environmentBlendMode = XR_ENVIRONMENT_BLEND_MODE_OPAQUE;
         end.layerCount = layer_count;
         end.layers = layer_count ? layers : nullptr;
+        const auto end_start = Clock::now();
         if (headset.check(xrEndFrame(headset.session(), &end), "xrEndFrame")) ++outcome.frames_submitted;
+        const auto frame_end = Clock::now();
         // Up to the first frame drawn: meshes uploaded, shaders' first use.
-        if (outcome.frames_rendered <= 1) outcome.first_frame_work_us = std::max(outcome.first_frame_work_us, microseconds(frame_start, Clock::now()));
-        else outcome.frame_work_us.add(microseconds(frame_start, Clock::now()));
+        if (outcome.frames_rendered <= 1) {
+            outcome.first_frame_work_us = std::max(outcome.first_frame_work_us, microseconds(frame_start, frame_end));
+        } else {
+            outcome.frame_work_us.add(microseconds(frame_start, frame_end));
+            outcome.steps_us.add(microseconds(steps_start, steps_end));
+            outcome.end_frame_us.add(microseconds(end_start, frame_end));
+        }
 
         if (bout_t >= options.duration_s) session.request_exit("duration");
         else if (bout.quit_requested()) session.request_exit("quit_command");

@@ -38,8 +38,10 @@ struct XrPlayOutcome {
     long long head_lost_frames = 0, hand_lost_frames = 0, button_orders = 0;
     std::vector<std::string> states, error_messages;
     // From xrWaitFrame's return to xrEndFrame's, the eyes' drawing within it, the wait itself; the first frame
-    // (shaders compiled, meshes uploaded) apart.
+    // (shaders compiled, meshes uploaded) apart. Within the frame work besides the drawing: the bout's steps, the
+    // scene built for the eyes, xrEndFrame (where the runtime takes the layers and the drawing is finished).
     ValueHistogram frame_work_us{1.0, 1e7}, render_us{1.0, 1e7}, wait_us{1.0, 1e7};
+    ValueHistogram steps_us{0.1, 1e7}, scene_us{0.1, 1e7}, end_frame_us{1.0, 1e7};
     double first_frame_work_us = 0.0;
     XrEyeImage eye_image;
 };
