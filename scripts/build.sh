@@ -4,5 +4,9 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 werror=OFF
 [[ "${CI:-}" == "true" ]] && werror=ON
-cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DKUMITE_WERROR="$werror" "$@" >/dev/null
+# Ninja when there is one (it keeps both cores busier than make: a minute less on a clean build), unless build/ was
+# made with another generator.
+generator=()
+if command -v ninja >/dev/null && [[ ! -f "$root/build/CMakeCache.txt" ]]; then generator=(-G Ninja); fi
+cmake -S "$root" -B "$root/build" "${generator[@]}" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DKUMITE_WERROR="$werror" "$@" >/dev/null
 cmake --build "$root/build" -j"$(nproc)"

@@ -5,7 +5,7 @@
 #                             Xvfb and Mesa for the viewer checks, what Monado needs to build for the --xr tests)
 set -euo pipefail
 
-packages=(build-essential cmake g++ libeigen3-dev nlohmann-json3-dev libtinygltf-dev catch2 python3 libopenexr-dev libflann-dev
+packages=(build-essential cmake ninja-build g++ libeigen3-dev nlohmann-json3-dev libtinygltf-dev catch2 python3 libopenexr-dev libflann-dev
           qt6-base-dev qt6-qpa-plugins libqt6opengl6-dev libgl-dev libxkbcommon-dev fonts-dejavu-core
           pybind11-dev python3-dev python3-numpy libopenxr-dev libopenxr-loader1 libx11-dev)
 if [[ "${1:-}" == "--test" ]]; then
