@@ -1,6 +1,7 @@
 #include "body_gl_renderer.h"
 
 #include "kumite/core/skinned_mesh_facing.h"
+#include "kumite/core/skinned_mesh_flat.h"
 
 #include <QMatrix4x4>
 
@@ -19,6 +20,7 @@ uniform sampler2D skin_texture; // row j: joint j's skin matrix, one column per 
 uniform mat4 view;
 uniform mat4 view_projection;
 out vec3 normal_eye;
+out vec3 position_eye;
 out vec3 colour;
 mat4 skin_of(uint joint) {
     int row = int(joint);
@@ -27,17 +29,26 @@ mat4 skin_of(uint joint) {
 }
 void main() {
     mat4 skin = weights.x * skin_of(joints.x) + weights.y * skin_of(joints.y) + weights.z * skin_of(joints.z) + weights.w * skin_of(joints.w);
+    vec4 world = skin * vec4(position, 1.0);
     normal_eye = mat3(view) * normalize(mat3(skin) * normal);
+    position_eye = (view * world).xyz;
     colour = colour_in;
-    gl_Position = view_projection * (skin * vec4(position, 1.0));
+    gl_Position = view_projection * world;
 })";
 const char* k_skinned_fragment = R"(#version 330 core
 in vec3 normal_eye;
+in vec3 position_eye;
 in vec3 colour;
+uniform bool flat_shading; // each triangle's own normal, from the screen derivatives (it faces the eye)
 out vec4 fragment;
 void main() {
-    vec3 n = normalize(normal_eye);
-    if (!gl_FrontFacing) n = -n;
+    vec3 n;
+    if (flat_shading) {
+        n = normalize(cross(dFdx(position_eye), dFdy(position_eye)));
+    } else {
+        n = normalize(normal_eye);
+        if (!gl_FrontFacing) n = -n;
+    }
     vec3 light = normalize(vec3(-0.3, 0.6, 1.0));  // the capsules' head light
     float diffuse = max(dot(n, light), 0.0);
     // Powers by multiplication: a pow() per pixel is what a software renderer (a headset's eyes drawn on the CPU)
@@ -64,6 +75,7 @@ struct BodyGlRenderer::Uploaded {
     QOpenGLBuffer indices{QOpenGLBuffer::IndexBuffer};
     int index_count = 0;
     GLenum cull = GL_NONE; // GL_BACK or GL_FRONT when the winding is consistent, else nothing culled
+    bool flat = false;     // flat-shaded: uploaded welded, normals from the screen derivatives
 };
 
 BodyGlRenderer::BodyGlRenderer() = default;
@@ -128,7 +140,9 @@ BodyGlRenderer::Uploaded& BodyGlRenderer::uploaded(const std::shared_ptr<const S
     }
     auto entry = std::make_unique<Uploaded>();
     entry->mesh = mesh;
-    upload(*mesh, *entry);
+    // A flat-shaded body goes up welded (skinned_mesh_flat.h): a quarter of the vertices to skin, the same picture.
+    entry->flat = skinned_mesh_is_flat_shaded(*mesh);
+    upload(entry->flat ? skinned_mesh_welded(*mesh) : *mesh, *entry);
     // Back faces are culled only where the winding agrees with the normals nearly everywhere (half the triangles
     // rasterised); a mix (an open or hand-edited mesh) is drawn two-sided.
     const double front = skinned_mesh_front_facing_share(*mesh);
@@ -158,6 +172,7 @@ void BodyGlRenderer::draw(const std::vector<SkinnedBody>& bodies, const Eigen::M
         }
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 4, GLsizei(body.skin.size()), GL_RGBA, GL_FLOAT, body.skin.data());
         if (mesh.cull != GL_NONE) glEnable(GL_CULL_FACE), glCullFace(mesh.cull);
+        m_program.setUniformValue("flat_shading", mesh.flat);
         mesh.vao.bind();
         glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
         glDisable(GL_CULL_FACE);

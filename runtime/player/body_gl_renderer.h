@@ -3,7 +3,8 @@
 // float texture (4 texels a joint, one row per joint: any joint count), each vertex in its material's colour, lit
 // like the capsules. Each SkinnedMesh is uploaded once (vertex and index buffers kept while the mesh is alive) and
 // shared by every body drawn with it; per body and frame only its skin matrices go to the GPU. Back faces are
-// culled when the mesh's winding says which they are (skinned_mesh_facing.h). Lit in linear light and written
+// culled when the mesh's winding says which they are (skinned_mesh_facing.h); a flat-shaded body goes up welded and
+// takes its triangles' normals from the screen (skinned_mesh_flat.h). Lit in linear light and written
 // with gamma 2, with no pow() per pixel: in software (a headset's eyes drawn on the CPU) that was half the cost.
 // Lives inside a current context, like SceneGlRenderer.
 

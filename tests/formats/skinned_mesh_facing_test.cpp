@@ -1,7 +1,8 @@
-// Which way bodies' triangles face (skinned_mesh_facing.h: back faces are culled only when it is clear), and the
-// headset's human body's colours.
+// Which way bodies' triangles face (skinned_mesh_facing.h: back faces are culled only when it is clear), which are
+// flat-shaded and drawn welded (skinned_mesh_flat.h), and the headset's human body's colours.
 
 #include "kumite/core/skinned_mesh_facing.h"
+#include "kumite/core/skinned_mesh_flat.h"
 #include "kumite/formats/gltf_reader.h"
 #include "support/test_paths.h"
 
@@ -62,4 +63,32 @@ TEST_CASE("gltf: the headset's human body reads with its materials' colours on i
     Result<GltfCharacter> scout = gltf_read_file(kumite::test::source_dir() / "data/characters/scout.glb");
     REQUIRE(scout.has_value());
     for (const auto& colour : scout->mesh.colours) CHECK(colour == (std::array<float, 3>{scout->mesh.base_colour[0], scout->mesh.base_colour[1], scout->mesh.base_colour[2]}));
+}
+
+TEST_CASE("skinned mesh flat: the low-poly human is flat-shaded and welds to a third of its vertices, triangles and skinning kept", "[formats]") {
+    Result<GltfCharacter> human = gltf_read_file(human_body());
+    REQUIRE(human.has_value());
+    const SkinnedMesh& mesh = human->mesh;
+    CHECK(skinned_mesh_is_flat_shaded(mesh));
+    const SkinnedMesh welded = skinned_mesh_welded(mesh);
+    INFO("vertices " << mesh.vertex_count() << " -> " << welded.vertex_count());
+    CHECK(welded.vertex_count() * 3 <= mesh.vertex_count());
+    REQUIRE(welded.triangles.size() == mesh.triangles.size());
+    REQUIRE(welded.colours.size() == welded.vertex_count());
+    // Every corner of every triangle where it was, on the same joints with the same weights, in the same colour.
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+        const std::uint32_t before = mesh.triangles[i], after = welded.triangles[i];
+        REQUIRE(after < welded.vertex_count());
+        differing += welded.positions[after] != mesh.positions[before] || welded.joints[after] != mesh.joints[before] ||
+                     welded.weights[after] != mesh.weights[before] || welded.colours[after] != mesh.colours[before];
+    }
+    CHECK(differing == 0);
+    // The mannequins are smooth: drawn as they are.
+    for (const char* name : {"kid", "scout", "brawler", "runner", "giant"}) {
+        INFO(name);
+        Result<GltfCharacter> read = gltf_read_file(kumite::test::source_dir() / "data/characters" / (std::string(name) + ".glb"));
+        REQUIRE(read.has_value());
+        CHECK_FALSE(skinned_mesh_is_flat_shaded(read->mesh));
+    }
 }
