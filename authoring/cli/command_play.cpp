@@ -59,13 +59,13 @@ const CommandSpec& play_spec() {
                               "head DISTANCE m in front (default 1.2), from START_S s into the capture, looping at its end)"},
          {"tracker-config", "FILE.json", "the room: bind address, room-to-world transform, room bounds (dtrack)"},
          {"commands", "SOURCE", "stdin, tcp:PORT (127.0.0.1) or script:FILE ('<time_s> <command>' per line)"},
-         {"headless", "", "no window"},
+         {"headless", "", "no window (with --xr: no supervisor's window beside the headset)"},
          {"xr", "", "in an OpenXR headset (the system's runtime; XR_RUNTIME_JSON honoured): its head and grips are the user, both\n"
                     "eyes drawn into the runtime's swapchains; runs --duration S of bout time (README \"In the headset\")"},
          {"xr-view-size", "WxH", "with --xr: the size drawn per eye (default: the runtime's recommended size; beyond its largest image,\n"
                                     "drawn at this size and scaled into it)"},
          {"xr-eye-image", "OUT.png", "with --xr: the left eye's image near the end of the bout (its geometry in the report's xr.eye_image)"},
-         {"screenshot", "OUT.png", "viewer: save the window after --duration seconds and close"},
+         {"screenshot", "OUT.png", "viewer: save the window after --duration seconds and close (with --xr: the supervisor's window at the end)"},
          {"viewer-config", "FILE.json", "the wall screen's corners, the eye separation, stereo and camera mode (see runtime/player/README.md)"},
          {"duration", "S", "seconds to run (default 30)"},
          {"realtime", "", "step on the wall clock"},
@@ -274,7 +274,11 @@ int run_play(int argc, char** argv) {
     view::PlayerRunOutcome viewer_outcome;
     nlohmann::json xr_report;
     if (xr) {
-        if (const int status = play_xr(bout, arguments, duration_s, after_step, write_event, xr_report); status != 0) return status;
+        // Beside the headset, the supervisor's window when there is a display (--headless: none).
+        const bool supervisor = !arguments.has("headless") && display_present();
+        if (const int status = play_xr(bout, arguments, duration_s, after_step, write_event, supervisor ? &viewer_settings : nullptr, xr_report); status != 0) {
+            return status;
+        }
     } else if (viewer) {
         view::PlayerRunOptions run;
         run.duration_s = duration_s;

@@ -20,9 +20,11 @@ nlohmann::json times_json(const ValueHistogram& h) {
 } // namespace
 
 int play_xr(Bout& bout, const Arguments& arguments, double duration_s, const std::function<void()>& after_step,
-            const std::function<void(nlohmann::json)>& write_event, nlohmann::json& xr_report) {
+            const std::function<void(nlohmann::json)>& write_event, const view::ViewerSettings* supervisor, nlohmann::json& xr_report) {
     view::XrPlayOptions options;
     options.duration_s = duration_s;
+    options.supervisor = supervisor;
+    options.supervisor_screenshot_path = arguments.value("screenshot").value_or("");
     options.eye_image_path = arguments.value("xr-eye-image").value_or("");
     if (const std::optional<std::string> size = arguments.value("xr-view-size")) {
         int width = 0, height = 0;
@@ -59,7 +61,10 @@ int play_xr(Bout& bout, const Arguments& arguments, double duration_s, const std
                  {"steps_us", times_json(outcome.steps_us)},
                  {"scene_us", times_json(outcome.scene_us)},
                  {"end_frame_us", times_json(outcome.end_frame_us)},
-                 {"wait_us", times_json(outcome.wait_us)}};
+                 {"wait_us", times_json(outcome.wait_us)},
+                 {"supervisor_window", outcome.supervisor_window},
+                 {"supervisor_renderer", outcome.supervisor_renderer},
+                 {"paused_s", outcome.paused_s}};
     if (!outcome.eye_image.path.empty()) {
         const view::XrEyeImage& e = outcome.eye_image;
         xr_report["eye_image"] = {{"path", e.path}, {"t", e.t_s}, {"width", e.width}, {"height", e.height}, {"eye", "left"},
@@ -71,12 +76,13 @@ int play_xr(Bout& bout, const Arguments& arguments, double duration_s, const std
                   << " s): the bout ends here, its events and report are written\n";
     }
     if (outcome.errors > 0) std::cerr << "kumite play --xr: " << outcome.errors << " OpenXR call(s) failed, first: " << outcome.error_messages.front() << "\n";
-    return 0;
+    return outcome.supervisor_screenshot_failed ? 1 : 0;
 }
 
 #else
 
-int play_xr(Bout&, const Arguments&, double, const std::function<void()>&, const std::function<void(nlohmann::json)>&, nlohmann::json&) {
+int play_xr(Bout&, const Arguments&, double, const std::function<void()>&, const std::function<void(nlohmann::json)>&, const view::ViewerSettings*,
+            nlohmann::json&) {
     std::cerr << "kumite play --xr: this kumite was built without OpenXR (install libopenxr-dev, or run scripts/setup.sh, and build again)\n";
     return 1;
 }

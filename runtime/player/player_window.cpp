@@ -3,6 +3,7 @@
 #include "player_scene.h"
 
 #include <QApplication>
+#include <QCloseEvent>
 #include <QElapsedTimer>
 #include <QKeyEvent>
 #include <QPainter>
@@ -37,9 +38,12 @@ const char* k_help =
 
 class PlayerWindow : public QWidget {
 public:
-    PlayerWindow(Bout& bout, const ViewerSettings& settings, const PlayerRunOptions& options, const std::function<void()>& after_step)
+    // `stepped_outside`: the bout is stepped by someone else (the headset's frame loop), who calls outside_step()
+    // after each step and outside_frame() once a frame; the window only shows and takes keys.
+    PlayerWindow(Bout& bout, const ViewerSettings& settings, const PlayerRunOptions& options, const std::function<void()>& after_step,
+                 bool stepped_outside = false)
         : m_bout(bout), m_options(options), m_after_step(after_step), m_bodies(settings.bodies), m_skeleton_overlay(settings.skeleton_overlay) {
-        setWindowTitle("kumite play");
+        setWindowTitle(stepped_outside ? "kumite play --xr (supervisor)" : "kumite play");
         resize(settings.width, settings.height);
         auto* layout = new QVBoxLayout(this);
         layout->setContentsMargins(0, 0, 0, 0);
@@ -56,6 +60,7 @@ public:
         m_view->set_overlay([this](QPainter& painter, const QRect& rect) { draw_hud(painter, rect); });
         m_view->setFocusPolicy(Qt::NoFocus);
         setFocusPolicy(Qt::StrongFocus);
+        if (stepped_outside) return;
         connect(&m_timer, &QTimer::timeout, this, [this] { tick(); });
         m_timer.setTimerType(Qt::PreciseTimer);
         m_timer.start(4);
@@ -64,7 +69,31 @@ public:
     bool screenshot_failed = false;
     PlayerRunOutcome outcome;
 
+    // Stepped outside: the step's events into the log; the current frame shown (drawn when Qt next paints).
+    void outside_step() {
+        for (const BoutEvent& event : m_bout.events()) describe(event);
+    }
+    void outside_frame() {
+        if (!m_clock.isValid()) m_clock.start(), m_fps_clock.start();
+        refresh_scene();
+        count_frame();
+        m_view->update();
+    }
+    bool paused() const { return m_paused; }
+    bool closed() const { return m_closed; }
+    std::string renderer() const { return m_view->renderer_description().toStdString(); }
+    // The window as it is now, as PNG (false when it cannot be written).
+    bool save(const std::string& path) {
+        refresh_scene();
+        return m_view->grab_image().save(QString::fromStdString(path), "PNG");
+    }
+
 protected:
+    void closeEvent(QCloseEvent* event) override {
+        m_closed = true;
+        QWidget::closeEvent(event);
+    }
+
     void keyPressEvent(QKeyEvent* event) override {
         for (const KeyCommand& key : k_keys) {
             if (event->key() == key.key) return send(with_labels(key.command));
@@ -153,6 +182,11 @@ private:
         }
         if (!stepped) return;
         refresh_scene();
+        count_frame();
+        m_view->update();
+    }
+
+    void count_frame() {
         ++m_frames_drawn;
         const double fps_elapsed = m_fps_clock.nsecsElapsed() * 1e-9;
         if (fps_elapsed >= 0.5) {
@@ -160,7 +194,6 @@ private:
             m_frames_drawn = 0;
             m_fps_clock.restart();
         }
-        m_view->update();
     }
 
     // The scene of the bout's current frame; seen from the user's own eyes (head-coupled), the eye follows the
@@ -312,13 +345,34 @@ private:
     QElapsedTimer m_clock, m_fps_clock;
     double m_next_s = 0.0, m_paused_s = 0.0, m_last_wall_s = 0.0, m_fps = 0.0;
     int m_frames_drawn = 0;
-    bool m_paused = false;
+    bool m_paused = false, m_closed = false;
     bool m_bodies = true, m_skeleton_overlay = false;
     int m_punch_kind = 0, m_kick_kind = 0, m_height = 0; // indices into k_punch_kinds, k_kick_kinds, k_heights
     std::deque<QString> m_log;
 };
 
 } // namespace
+
+struct SupervisorWindow::Window : PlayerWindow {
+    using PlayerWindow::PlayerWindow;
+};
+
+SupervisorWindow::SupervisorWindow(Bout& bout, const ViewerSettings& settings) {
+    static const std::function<void()> nothing;
+    m_window = std::make_unique<Window>(bout, settings, PlayerRunOptions{}, nothing, true);
+    if (settings.fullscreen) m_window->showFullScreen();
+    else m_window->show();
+}
+SupervisorWindow::~SupervisorWindow() = default;
+void SupervisorWindow::after_step() { m_window->outside_step(); }
+void SupervisorWindow::show_frame() {
+    m_window->outside_frame();
+    QApplication::processEvents();
+}
+bool SupervisorWindow::paused() const { return m_window->paused(); }
+bool SupervisorWindow::closed() const { return m_window->closed(); }
+bool SupervisorWindow::save(const std::string& path) { return m_window->save(path); }
+std::string SupervisorWindow::renderer() const { return m_window->renderer(); }
 
 int run_player_window(Bout& bout, const ViewerSettings& settings, const PlayerRunOptions& options, const std::function<void()>& after_step,
                       PlayerRunOutcome* outcome) {

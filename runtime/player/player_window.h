@@ -9,6 +9,7 @@
 #include "kumite/runtime/bout.h"
 
 #include <functional>
+#include <memory>
 #include <string>
 
 namespace kumite::view {
@@ -29,5 +30,26 @@ struct PlayerRunOutcome {
 // (event logging). Returns 0, or 1 when the screenshot could not be written.
 int run_player_window(Bout& bout, const ViewerSettings& settings, const PlayerRunOptions& options,
                       const std::function<void()>& after_step, PlayerRunOutcome* outcome = nullptr);
+
+// The same window beside a headset (`kumite play --xr`): the orbit view, the HUD and the keys, while the headset's
+// frame loop steps the bout. Needs a QApplication. The loop calls after_step() after each bout step and
+// show_frame() once a frame (the scene shown, Qt's events handled: keys become orders, Space pauses, Esc closes);
+// the loop leaves the bout's time still while paused() and ends the bout once closed(). Whatever OpenGL context was
+// current before show_frame() may not be after it.
+class SupervisorWindow {
+public:
+    SupervisorWindow(Bout& bout, const ViewerSettings& settings);
+    ~SupervisorWindow();
+    void after_step();
+    void show_frame();
+    bool paused() const;
+    bool closed() const;
+    bool save(const std::string& path); // the window as PNG; false when it cannot be written
+    std::string renderer() const;
+
+private:
+    struct Window;
+    std::unique_ptr<Window> m_window;
+};
 
 } // namespace kumite::view

@@ -34,6 +34,7 @@ public:
     bool render(XrHeadset& headset, const Scene& scene, const XrEyeViews& views, std::array<XrCompositionLayerProjectionView, 2>& layer_views,
                 int capture_eye = -1, QImage* captured = nullptr);
     void release();
+    void make_current() { m_context.makeCurrent(&m_surface); } // after another context was (the supervisor's window)
     std::array<int, 2> size() const { return {m_width, m_height}; }                       // drawn, per eye
     std::array<int, 2> swapchain_size() const { return {m_swapchain_width, m_swapchain_height}; }
     long long format() const { return m_format; }

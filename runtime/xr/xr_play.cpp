@@ -1,10 +1,11 @@
 #include "xr_play.h"
 
 #include "player_scene.h"
+#include "player_window.h"
 #include "xr_eye_renderer.h"
 #include "xr_headset.h"
 
-#include <QGuiApplication>
+#include <QApplication>
 
 #include <algorithm>
 #include <chrono>
@@ -117,7 +118,9 @@ int run_xr_bout(Bout& bout, const XrPlayOptions& options, const std::function<vo
     // with a message rather than Qt aborting for want of a display).
     if (!QGuiApplication::instance()) {
         if (!display || !*display) qputenv("QT_QPA_PLATFORM", "offscreen");
-        application = std::make_unique<QGuiApplication>(argc, argv);
+        // Widgets for the supervisor's window; else the GUI alone.
+        if (options.supervisor) application = std::make_unique<QApplication>(argc, argv);
+        else application = std::make_unique<QGuiApplication>(argc, argv);
     }
     XrEyeRenderer renderer;
     Result<void> ready = renderer.create_context();
@@ -135,12 +138,20 @@ int run_xr_bout(Bout& bout, const XrPlayOptions& options, const std::function<vo
     outcome.view_width = renderer.size()[0], outcome.view_height = renderer.size()[1];
     outcome.swapchain_width = renderer.swapchain_size()[0], outcome.swapchain_height = renderer.swapchain_size()[1];
 
+    // The supervisor's window, once the headset is ready: the bout seen from outside, the HUD, the keys.
+    std::unique_ptr<SupervisorWindow> supervisor;
+    if (options.supervisor && qobject_cast<QApplication*>(QCoreApplication::instance())) {
+        supervisor = std::make_unique<SupervisorWindow>(bout, *options.supervisor);
+        outcome.supervisor_window = true;
+        outcome.supervisor_renderer = supervisor->renderer();
+        renderer.make_current();
+    }
     Session session{headset, outcome, on_state};
     Scene scene;
     XrTrackedUser user;
     XrEyeViews views;
     std::array<XrCompositionLayerProjectionView, 2> layer_views{};
-    XrTime first_display_time = 0;
+    XrTime first_display_time = 0, paused_ns = 0, last_display_time = 0;
     long long next_step = 0;
     double bout_t = 0.0;
     QImage eye_image;
@@ -175,8 +186,11 @@ int run_xr_bout(Bout& bout, const XrPlayOptions& options, const std::function<vo
             outcome.ended_by = "runtime_lost";
             break;
         }
-        if (first_display_time == 0) first_display_time = frame.predictedDisplayTime;
-        bout_t = double(frame.predictedDisplayTime - first_display_time) * 1e-9;
+        if (first_display_time == 0) first_display_time = last_display_time = frame.predictedDisplayTime;
+        // Paused by the supervisor: the bout's time stands still (the headset still gets its frames).
+        if (supervisor && supervisor->paused()) paused_ns += frame.predictedDisplayTime - last_display_time;
+        last_display_time = frame.predictedDisplayTime;
+        bout_t = double(frame.predictedDisplayTime - first_display_time - paused_ns) * 1e-9;
 
         headset.sync_and_locate(frame.predictedDisplayTime, session.state == XR_SESSION_STATE_FOCUSED, user);
         feed_tracker(bout, user, outcome);
@@ -192,6 +206,7 @@ int run_xr_bout(Bout& bout, const XrPlayOptions& options, const std::function<vo
             bout.step(double(next_step) / bout.rate_hz());
             ++next_step;
             after_step();
+            if (supervisor) supervisor->after_step();
         }
         const auto steps_end = Clock::now();
 
@@ -243,10 +258,23 @@ int run_xr_bout(Bout& bout, const XrPlayOptions& options, const std::function<vo
             outcome.end_frame_us.add(microseconds(end_start, frame_end));
         }
 
+        // The supervisor's window between frames (outside the frame work); then the eyes' context again.
+        if (supervisor) {
+            supervisor->show_frame();
+            renderer.make_current();
+        }
+
         if (bout_t >= options.duration_s) session.request_exit("duration");
         else if (bout.quit_requested()) session.request_exit("quit_command");
         else if (user.quit_pressed) session.request_exit("quit_button");
+        else if (supervisor && supervisor->closed()) session.request_exit("supervisor_closed");
     }
+    outcome.paused_s = double(paused_ns) * 1e-9;
+    if (supervisor && !options.supervisor_screenshot_path.empty() && !supervisor->save(options.supervisor_screenshot_path)) {
+        std::cerr << "kumite play --xr: could not write the supervisor's screenshot " << options.supervisor_screenshot_path << "\n";
+        outcome.supervisor_screenshot_failed = true;
+    }
+    if (supervisor) renderer.make_current();
     renderer.release();
     outcome.errors = headset.errors();
     outcome.error_messages = headset.error_messages();

@@ -6,6 +6,8 @@
 // the user's quit button, a supervisor's quit, or when the runtime stops or is lost (the caller still writes its
 // report). Needs a bout made with a fed tracker (HeadTracker::fed).
 
+#include "viewer_settings.h"
+
 #include "kumite/runtime/bout.h"
 #include "kumite/runtime/value_histogram.h"
 
@@ -19,6 +21,10 @@ struct XrPlayOptions {
     double duration_s = 30.0;
     std::string eye_image_path; // non-empty: the left eye of the last frame drawn, as PNG (and its geometry in the outcome)
     std::array<int, 2> view_size{}; // per eye, pixels; 0: the runtime's recommended size (benchmarks ask for a headset's)
+    // The supervisor's desktop window beside the headset (player_window.h), when set; its PNG at the end when a
+    // path is given.
+    const ViewerSettings* supervisor = nullptr;
+    std::string supervisor_screenshot_path;
 };
 
 struct XrEyeImage {
@@ -44,6 +50,10 @@ struct XrPlayOutcome {
     ValueHistogram steps_us{0.1, 1e7}, scene_us{0.1, 1e7}, end_frame_us{1.0, 1e7};
     double first_frame_work_us = 0.0;
     XrEyeImage eye_image;
+    bool supervisor_window = false;  // opened beside the headset
+    std::string supervisor_renderer; // what drew it
+    double paused_s = 0.0;           // bout time held still by the supervisor (Space)
+    bool supervisor_screenshot_failed = false;
 };
 
 // Runs the session. Returns 0, or 1 when no session could be started (the message already on stderr).

@@ -70,8 +70,9 @@ int main(int argc, char** argv) {
         const nlohmann::json baseline = read_json(baseline_report);
         for (const std::string& size : {std::string(), std::string("2016x2240")}) {
             const std::string report_path = (folder / ("xr-" + fighters + "-" + (size.empty() ? "runtime" : size) + ".json")).string();
-            std::vector<std::string> command = {taskset, "-c", core, kumite, "play", "--xr", "--fighters", fighters, "--duration", std::to_string(seconds),
-                                                "--report", report_path};
+            // --headless: no supervisor's window drawing on the same core.
+            std::vector<std::string> command = {taskset, "-c", core, kumite, "play", "--xr", "--headless", "--fighters", fighters, "--duration",
+                                                std::to_string(seconds), "--report", report_path};
             if (!size.empty()) command.insert(command.end(), {"--xr-view-size", size});
             if (!character.empty()) command.insert(command.end(), {"--character", character});
             const KumiteRun run = run_kumite_xr(command, (folder / "kumite.out").string(), port, seconds + 90.0, [](double, RemoteData& data) {

@@ -6,7 +6,9 @@
 //     turning +-0.3 rad, the right controller's A pressed once at 12 s and untracked from 20 to 21 s; the supervisor orders a punch every 2 s
 //     (predicted aim). DB.kdb `default`: the reference database.
 //   xr_bout_check eye KUMITE DB.kdb - OUT_DIR
-//     a still user 2.5 m away; the left eye's image must show the fighter where its joints project.
+//     a still user 2.5 m away; the left eye's image must show the fighter where its joints project, and the
+//     supervisor's window beside the headset must have been drawn.
+// Both run the --xr defaults: the human body, the supervisor's window (with_monado.sh gives a display).
 // Prints every measured figure; exits 1 on any failed check.
 
 #include "kumite_xr_driver.h"
@@ -22,6 +24,7 @@
 #include <filesystem>
 #include <optional>
 #include <fstream>
+#include <set>
 #include <iostream>
 #include <sstream>
 #include <vector>
@@ -105,7 +108,7 @@ int main(int argc, char** argv) {
         capture = std::move(*read);
     }
     const std::string report_path = out + "/report.json", events_path = out + "/events.jsonl", user_path = out + "/user.csv",
-                      orders_path = out + "/orders.txt", image_path = out + "/eye.png";
+                      orders_path = out + "/orders.txt", image_path = out + "/eye.png", supervisor_path = out + "/supervisor.png";
     {
         std::ofstream orders(orders_path);
         for (double t = 4.0; t < duration_s - 1.0; t += 2.0) orders << t << " punch\n";
@@ -116,7 +119,7 @@ int main(int argc, char** argv) {
     if (db != "default") command.insert(command.begin() + 2, db); // default: the reference database (baked once, cached)
     // Predicted aim: a boxer never holds still, the strike goes where the head is heading.
     if (bout) command.insert(command.end(), {"--commands", "script:" + orders_path, "--aim", "predicted"});
-    else command.insert(command.end(), {"--xr-eye-image", image_path});
+    else command.insert(command.end(), {"--xr-eye-image", image_path, "--screenshot", supervisor_path});
     std::vector<Fed> fed;
     const KumiteRun run = run_kumite_xr(command, out + "/kumite.out", port, duration_s + 90.0, [&](double t, RemoteData& data) {
         Fed sample;
@@ -214,6 +217,16 @@ int main(int argc, char** argv) {
         const long long hand_lost = xr["hand_lost_frames"];
         check(hand_lost >= 10 && hand_lost <= 40, "the right controller's second out of tracking is a lost hand (" + std::to_string(hand_lost) + " frames)");
     } else {
+        // Beside the headset, the supervisor's window (there is a display: with_monado.sh runs Xvfb): its picture at
+        // the end, the scene and the HUD drawn.
+        const QImage window(QString::fromStdString(supervisor_path));
+        std::set<QRgb> colours;
+        for (int y = 0; y < window.height(); y += 4) {
+            for (int x = 0; x < window.width(); x += 4) colours.insert(window.pixel(x, y));
+        }
+        check(xr.value("supervisor_window", false) && !window.isNull() && window.width() >= 320 && colours.size() >= 50,
+              "the supervisor's window was open beside the headset and drawn (" + std::to_string(colours.size()) + " colours, " +
+                  xr.value("supervisor_renderer", std::string()) + ")");
         const nlohmann::json& eye = xr["eye_image"];
         const QImage image(QString::fromStdString(image_path));
         check(!image.isNull() && image.width() == eye["width"].get<int>() && image.height() == eye["height"].get<int>(), "the eye image was written at the view's size");
