@@ -156,7 +156,9 @@ int main(int argc, char** argv) {
     const auto& states = xr["states"];
     check(std::find(states.begin(), states.end(), "focused") != states.end(), "the session reached FOCUSED");
     const long long waited = xr["frames_waited"], submitted = xr["frames_submitted"];
-    check(waited == submitted && waited >= (long long)(duration_s * 10), "every frame waited was submitted (" + std::to_string(submitted) + " of " + std::to_string(waited) + ")");
+    // Frames all through the bout: the null compositor paces 20 Hz, a busy machine (ctest -j2 beside Blender) halves
+    // that as frames come late; 5 a second is the floor of a bout that ran.
+    check(waited == submitted && waited >= (long long)(duration_s * 5), "every frame waited was submitted (" + std::to_string(submitted) + " of " + std::to_string(waited) + ")");
     check(xr["errors"] == 0, "no OpenXR error (" + xr["errors"].dump() + ")");
     check(xr["ended_by"] == "duration", "the bout ended at its duration (" + xr["ended_by"].dump() + ")");
     const long long frames = report["frames"];
@@ -215,7 +217,10 @@ int main(int argc, char** argv) {
                                                  std::to_string(defended) + " punches blocked or slipped)");
         check(xr["button_orders"].get<long long>() >= 1, "the right controller's A button ordered a punch");
         const long long hand_lost = xr["hand_lost_frames"];
-        check(hand_lost >= 10 && hand_lost <= 40, "the right controller's second out of tracking is a lost hand (" + std::to_string(hand_lost) + " frames)");
+        // A second of the runtime's frames (20 Hz for the null compositor; fewer when the machine is busy).
+        const double frames_per_s = double(waited) / duration_s;
+        check(hand_lost >= 0.5 * frames_per_s && hand_lost <= 2.0 * frames_per_s, "the right controller's second out of tracking is a lost hand (" +
+                                                                                      std::to_string(hand_lost) + " frames at " + std::to_string(frames_per_s) + " frames/s)");
     } else {
         // Beside the headset, the supervisor's window (there is a display: with_monado.sh runs Xvfb): its picture at
         // the end, the scene and the HUD drawn.
