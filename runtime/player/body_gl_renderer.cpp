@@ -1,5 +1,6 @@
 #include "body_gl_renderer.h"
 
+#include "kumite/core/skinned_mesh_decimate.h"
 #include "kumite/core/skinned_mesh_facing.h"
 #include "kumite/core/skinned_mesh_flat.h"
 
@@ -67,13 +68,20 @@ void main() {
 
 } // namespace
 
-// A SkinnedMesh on the GPU, and how its triangles face.
-struct BodyGlRenderer::Uploaded {
-    std::shared_ptr<const SkinnedMesh> mesh; // kept alive: its address keys the upload
+// Vertex and index buffers of one mesh.
+struct BodyGlRenderer::GpuMesh {
     QOpenGLVertexArrayObject vao;
     QOpenGLBuffer vertices{QOpenGLBuffer::VertexBuffer};
     QOpenGLBuffer indices{QOpenGLBuffer::IndexBuffer};
     int index_count = 0;
+    void destroy() { vao.destroy(), vertices.destroy(), indices.destroy(); }
+};
+
+// A SkinnedMesh on the GPU, and how its triangles face.
+struct BodyGlRenderer::Uploaded {
+    std::shared_ptr<const SkinnedMesh> mesh; // kept alive: its address keys the upload
+    GpuMesh full;
+    std::unique_ptr<GpuMesh> coarse; // for small views, made when first needed
     GLenum cull = GL_NONE; // GL_BACK or GL_FRONT when the winding is consistent, else nothing culled
     bool flat = false;     // flat-shaded: uploaded welded, normals from the screen derivatives
 };
@@ -97,7 +105,7 @@ bool BodyGlRenderer::initialize(QString& error) {
     return true;
 }
 
-void BodyGlRenderer::upload(const SkinnedMesh& mesh, Uploaded& gpu) {
+void BodyGlRenderer::upload(const SkinnedMesh& mesh, GpuMesh& gpu) {
     // Interleaved: position (3 floats), normal (3 floats), joints (4 u16), weights (4 floats), colour (3 floats).
     struct Vertex {
         float position[3], normal[3];
@@ -142,7 +150,7 @@ BodyGlRenderer::Uploaded& BodyGlRenderer::uploaded(const std::shared_ptr<const S
     entry->mesh = mesh;
     // A flat-shaded body goes up welded (skinned_mesh_flat.h): a quarter of the vertices to skin, the same picture.
     entry->flat = skinned_mesh_is_flat_shaded(*mesh);
-    upload(entry->flat ? skinned_mesh_welded(*mesh) : *mesh, *entry);
+    upload(entry->flat ? skinned_mesh_welded(*mesh) : *mesh, entry->full);
     // Back faces are culled only where the winding agrees with the normals nearly everywhere (half the triangles
     // rasterised); a mix (an open or hand-edited mesh) is drawn two-sided.
     const double front = skinned_mesh_front_facing_share(*mesh);
@@ -152,7 +160,17 @@ BodyGlRenderer::Uploaded& BodyGlRenderer::uploaded(const std::shared_ptr<const S
     return *m_meshes.back();
 }
 
-void BodyGlRenderer::draw(const std::vector<SkinnedBody>& bodies, const Eigen::Matrix4f& view, const Eigen::Matrix4f& view_projection) {
+BodyGlRenderer::GpuMesh& BodyGlRenderer::coarse(Uploaded& mesh) {
+    if (!mesh.coarse) {
+        // A flat-shaded body is decimated welded (its corners joined, so the surface is one piece to fold).
+        const SkinnedMesh source = mesh.flat ? skinned_mesh_welded(*mesh.mesh) : *mesh.mesh;
+        mesh.coarse = std::make_unique<GpuMesh>();
+        upload(skinned_mesh_decimated(source, {source.triangles.size() / 9, 0.005}), *mesh.coarse);
+    }
+    return *mesh.coarse;
+}
+
+void BodyGlRenderer::draw(const std::vector<SkinnedBody>& bodies, const Eigen::Matrix4f& view, const Eigen::Matrix4f& view_projection, int view_height_px) {
     if (!m_ready || bodies.empty()) return;
     m_program.bind();
     m_program.setUniformValue("view", QMatrix4x4(view.data()).transposed());
@@ -173,8 +191,9 @@ void BodyGlRenderer::draw(const std::vector<SkinnedBody>& bodies, const Eigen::M
         glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 4, GLsizei(body.skin.size()), GL_RGBA, GL_FLOAT, body.skin.data());
         if (mesh.cull != GL_NONE) glEnable(GL_CULL_FACE), glCullFace(mesh.cull);
         m_program.setUniformValue("flat_shading", mesh.flat);
-        mesh.vao.bind();
-        glDrawElements(GL_TRIANGLES, mesh.index_count, GL_UNSIGNED_INT, nullptr);
+        GpuMesh& gpu = view_height_px <= k_coarse_view_px ? coarse(mesh) : mesh.full;
+        gpu.vao.bind();
+        glDrawElements(GL_TRIANGLES, gpu.index_count, GL_UNSIGNED_INT, nullptr);
         glDisable(GL_CULL_FACE);
     }
     glBindVertexArray(0);
@@ -183,7 +202,10 @@ void BodyGlRenderer::draw(const std::vector<SkinnedBody>& bodies, const Eigen::M
 }
 
 void BodyGlRenderer::release() {
-    for (const auto& entry : m_meshes) entry->vao.destroy(), entry->vertices.destroy(), entry->indices.destroy();
+    for (const auto& entry : m_meshes) {
+        entry->full.destroy();
+        if (entry->coarse) entry->coarse->destroy();
+    }
     m_meshes.clear();
     if (m_skin_texture != 0) glDeleteTextures(1, &m_skin_texture);
     m_skin_rows = 0;

@@ -187,7 +187,7 @@ void SceneGlRenderer::render(const Scene& scene, const ViewProjection& vp, const
         draw_solid(m_sphere, sphere_model(s.center, s.radius_m), s.color, 1.0f);
     }
 
-    m_bodies.draw(scene.bodies, m_view, m_view_projection);
+    m_bodies.draw(scene.bodies, m_view, m_view_projection, viewport.height());
 
     // Lines: grid, polylines, boxes; dots separately.
     m_line_vertices.clear();
