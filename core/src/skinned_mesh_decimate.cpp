@@ -86,7 +86,9 @@ public:
         while (triangles > m_limits.target_triangles && !m_queue.empty()) {
             const Candidate best = m_queue.top();
             m_queue.pop();
-            if (!m_alive_vertex[best.from] || !m_alive_vertex[best.to] || best.from_stamp != m_stamp[best.from] || best.to_stamp != m_stamp[best.to]) continue;
+            const bool stale = !m_alive_vertex[best.from] || !m_alive_vertex[best.to] || best.from_stamp != m_stamp[best.from] ||
+                               best.to_stamp != m_stamp[best.to];
+            if (stale) continue;
             if (best.cost > max_cost) break;
             if (!collapsible(best.from, best.to)) continue;
             triangles -= collapse(best.from, best.to);
@@ -152,7 +154,8 @@ private:
             // Nor, over many collapses, away from the way the full surface faced at its corners.
             const Eigen::Vector3d was = m_facing[c[0] == from ? to : c[0]] + m_facing[c[1] == from ? to : c[1]] + m_facing[c[2] == from ? to : c[2]];
             if (!(was.norm() > 0.0) || n1.normalized().dot(was.normalized()) < k_min_facing_cos) return false;
-            if (quality(after[0], after[1], after[2]) < k_min_quality && quality(after[0], after[1], after[2]) < quality(before[0], before[1], before[2])) return false;
+            const double quality_after = quality(after[0], after[1], after[2]);
+            if (quality_after < k_min_quality && quality_after < quality(before[0], before[1], before[2])) return false;
         }
         return true;
     }

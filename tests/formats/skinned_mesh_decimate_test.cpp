@@ -145,9 +145,11 @@ TEST_CASE("decimate: the human's coarse body has a third of the triangles, its v
     const std::size_t turned = against(coarse), turned_full = against(welded);
     INFO(turned << " coarse triangles face against the full surface (" << turned_full << " of the full mesh's by this measure)");
     CHECK(turned <= turned_full);
-    std::cout << "coarse human: " << triangles << " -> " << coarse_triangles << " triangles, " << turned << " facing against the full surface (full mesh " << turned_full << "), farthest full vertex " << farthest_from_surface(welded, coarse) * 1000.0 << " mm\n";
     // The full body's every vertex is near the coarse surface.
     const double farthest = farthest_from_surface(welded, coarse);
+    std::cout << "coarse human: " << triangles << " -> " << coarse_triangles << " triangles, " << turned
+              << " facing against the full surface (full mesh " << turned_full << "), farthest full vertex "
+              << farthest * 1000.0 << " mm\n";
     INFO("farthest full-body vertex from the coarse surface " << farthest * 1000.0 << " mm");
     CHECK(farthest < 0.005);
 }
