@@ -162,8 +162,10 @@ BodyGlRenderer::Uploaded& BodyGlRenderer::uploaded(const std::shared_ptr<const S
 
 BodyGlRenderer::GpuMesh& BodyGlRenderer::coarse(Uploaded& mesh) {
     if (!mesh.coarse) {
-        // A flat-shaded body is decimated welded (its corners joined, so the surface is one piece to fold).
-        const SkinnedMesh source = mesh.flat ? skinned_mesh_welded(*mesh.mesh) : *mesh.mesh;
+        // A flat-shaded body is decimated welded (its corners joined, so the surface is one piece to fold); any
+        // other as it is (no copy).
+        const SkinnedMesh welded = mesh.flat ? skinned_mesh_welded(*mesh.mesh) : SkinnedMesh{};
+        const SkinnedMesh& source = mesh.flat ? welded : *mesh.mesh;
         mesh.coarse = std::make_unique<GpuMesh>();
         upload(skinned_mesh_decimated(source, {source.triangles.size() / 9, 0.005}), *mesh.coarse);
     }
