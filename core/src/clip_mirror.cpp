@@ -16,6 +16,14 @@ Eigen::Matrix3d householder(const Eigen::Vector3d& normal) {
     return Eigen::Matrix3d::Identity() - 2.0 * n * n.transpose();
 }
 
+std::string without_digits(const std::string& name) {
+    std::string kept;
+    for (char c : name) {
+        if (c < '0' || c > '9') kept += c;
+    }
+    return kept;
+}
+
 // Offsets below `joint` paired with their partners' (children, then the first End Sites).
 std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> child_offset_pairs(const Skeleton& skeleton, const std::vector<int>& partner,
                                                                             int joint, const std::vector<bool>& animated) {
@@ -95,6 +103,18 @@ Result<MirrorSymmetry> mirror_symmetry_find(const Skeleton& skeleton, double tol
         const Side other = names[joint].side == Side::left ? Side::right : Side::left;
         for (int candidate = 0; candidate < joints; ++candidate) {
             if (names[candidate].side == other && names[candidate].base == names[joint].base) symmetry.partner[joint] = candidate;
+        }
+        if (symmetry.partner[joint] < 0) {
+            // Exporters number one side's joints and not the other's (SNU's LeftShoulder1 beside RightShoulder): the
+            // one joint of the other side whose name is the same without its digits.
+            int found = -1, count = 0;
+            for (int candidate = 0; candidate < joints; ++candidate) {
+                if (names[candidate].side == other && without_digits(names[candidate].base) == without_digits(names[joint].base)) {
+                    found = candidate;
+                    ++count;
+                }
+            }
+            if (count == 1) symmetry.partner[joint] = found;
         }
         if (symmetry.partner[joint] < 0) {
             return make_error(ErrorCode::invalid, "joint " + skeleton.names[joint] + " has no mirror partner");

@@ -13,7 +13,7 @@ namespace {
 
 using nlohmann::json;
 
-const std::set<std::string> k_non_strikes = {"rest", "step_forward", "step_back", "step_left", "step_right"};
+const std::set<std::string> k_non_strikes = {"rest", "step_forward", "step_back", "step_left", "step_right", "hit_reaction"};
 const std::set<std::string> k_clip_keys = {"name", "source", "first", "last", "semantics", "segment", "side", "hit_frame", "mirror", "kind", "height"};
 
 std::string side_name(Side side) { return side == Side::left ? "left" : side == Side::right ? "right" : "none"; }

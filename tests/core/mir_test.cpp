@@ -121,6 +121,26 @@ TEST_CASE("clip_mirror: a right kick becomes a left kick, and twice is the origi
     for (size_t joint = 0; joint < back.size(); ++joint) CHECK_THAT(back[joint], kumite::test::is_near(original[joint], 1e-9));
 }
 
+TEST_CASE("clip_mirror: joints numbered on one side only (SNU's LeftShoulder1, RightShoulder) still pair", "[core][corpus]") {
+    const std::optional<BvhFile> file = read_capture("snu-boxing/boxman_hited_dir.bvh");
+    if (!file) return;
+    Result<MirrorSymmetry> symmetry = mirror_symmetry_find(file->clip.skeleton);
+    REQUIRE(symmetry.has_value());
+    const Skeleton& skeleton = file->clip.skeleton;
+    auto joint = [&](const char* name) { return int(std::find(skeleton.names.begin(), skeleton.names.end(), name) - skeleton.names.begin()); };
+    CHECK(symmetry->partner[joint("LeftShoulder1")] == joint("RightShoulder"));
+    CHECK(symmetry->partner[joint("LeftShoulder1Dummy")] == joint("RightShoulderDummy"));
+    CHECK(symmetry->partner[joint("RightShoulder")] == joint("LeftShoulder1"));
+    const Clip mirrored = clip_mirror(file->clip, *symmetry);
+    const int hand_l = file->body_map.joint(BodyPart::hand_l), hand_r = file->body_map.joint(BodyPart::hand_r);
+    const int frame = 88; // the first reaction's largest displacement, the left glove dropped
+    const auto original = positions_of(skeleton, file->clip.pose(frame));
+    const auto reflected = positions_of(mirrored.skeleton, mirrored.pose(frame));
+    // (within a millimetre: the capture's two sides are not exact mirror images)
+    CHECK_THAT(reflected[hand_r], kumite::test::is_near(symmetry->reflection * original[hand_l], 1e-3));
+    CHECK_THAT(reflected[hand_l], kumite::test::is_near(symmetry->reflection * original[hand_r], 1e-3));
+}
+
 TEST_CASE("retarget: locomotion, strikes and a CMU capture onto all five characters", "[core][corpus]") {
     const std::filesystem::path characters = kumite::test::source_dir() / "data/characters";
     std::vector<std::pair<std::string, BvhFile>> targets;

@@ -20,7 +20,7 @@
 namespace kumite::annotate {
 namespace {
 
-const QStringList k_semantics = {"punch", "kick", "knee", "elbow", "block", "reach", "rest", "step_forward", "step_back", "step_left", "step_right"};
+const QStringList k_semantics = {"punch", "kick", "knee", "elbow", "block", "reach", "rest", "step_forward", "step_back", "step_left", "step_right", "hit_reaction"};
 int g_next_spin_session = 1'000'000; // apart from the timeline's drag sessions
 
 QString part_text(BodyPart part) {

@@ -25,7 +25,7 @@ struct RawAnnotatedClip {
     std::string source;               // capture path, relative to the mocap root when under it
     int first_frame = 0;              // trim range in the capture, inclusive
     int last_frame = 0;
-    std::string semantics;            // punch, kick, reach, rest, step_forward, step_back, step_left, step_right, ...
+    std::string semantics;            // punch, kick, reach, block, ...; not strikes: rest, step_forward, step_back, step_left, step_right, hit_reaction
     std::optional<BodyPart> segment;  // the hit segment (strikes)
     Side side = Side::none;
     std::optional<int> hit_frame;     // in capture frames, inside the trim range (strikes)
