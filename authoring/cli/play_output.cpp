@@ -140,7 +140,10 @@ nlohmann::json play_report_json(const Bout& bout) {
               {"block_clip_speed_ratio", quantiles_of(counters.block_clip_speed_ratio)},
               {"joint_limit_violations", counters.defence_joint_limit_violations},
               {"foot_shift_m", counters.defence_foot_shift_m},
-              {"by_target", by_target}}}};
+              {"by_target", by_target}}},
+            {"hit_reactions",
+             {{"count", counters.hit_reactions}, {"captured", counters.captured_hit_reactions}, {"blows_answered", counters.hit_reaction_blows},
+              {"angle_to_blow_deg", quantiles_of(counters.hit_reaction_angle_deg)}, {"delay_s", quantiles_of(counters.hit_reaction_delay_s)}}}};
 }
 
 

@@ -1,5 +1,7 @@
 #include "kumite/runtime/bout.h"
 
+#include <algorithm>
+#include <cmath>
 #include <chrono>
 
 namespace kumite {
@@ -237,6 +239,16 @@ void Bout::step(double t_s) {
                 }
                 m_counters.defence_joint_limit_violations += event.joint_limit_violations;
                 m_counters.defence_foot_shift_m = std::max(m_counters.defence_foot_shift_m, event.foot_shift_m);
+                break;
+            case FighterEvent::Type::hit_reaction:
+                ++m_counters.hit_reactions;
+                m_counters.hit_reaction_blows += event.reaction_blows;
+                if (event.clip >= 0) {
+                    ++m_counters.captured_hit_reactions;
+                    const double angle_deg = std::acos(std::clamp(event.reaction_fit, -1.0, 1.0)) * 180.0 / 3.14159265358979;
+                    m_counters.hit_reaction_angle_deg.add(std::max(1e-2, angle_deg));
+                }
+                m_counters.hit_reaction_delay_s.add(event.reaction_delay_s);
                 break;
             case FighterEvent::Type::strike_end:
                 (event.impact ? m_counters.impacts : m_counters.follow_throughs) += 1;

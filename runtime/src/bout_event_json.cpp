@@ -96,6 +96,15 @@ nlohmann::json event_object(const Bout& bout, const BoutEvent& bout_event) {
         line["joint_limit_violations"] = event.joint_limit_violations;
         line["foot_shift_m"] = event.foot_shift_m;
         break;
+    case FighterEvent::Type::hit_reaction:
+        line["hand"] = event.user_strike.hand == 0 ? "left" : "right";
+        line["aimed_at"] = event.user_strike.at_head ? "head" : "chest";
+        if (event.clip >= 0) line["clip"] = bout.database().string(bout.database().clips[event.clip].name);
+        else line["clip"] = nullptr; // the database holds no hit reaction
+        line["fit"] = event.reaction_fit;
+        line["delay_s"] = event.reaction_delay_s;
+        line["blows"] = event.reaction_blows;
+        break;
     default: break;
     }
     return line;

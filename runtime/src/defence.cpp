@@ -86,6 +86,7 @@ void Defence::end_strike(double t_s, Hand& hand, UserStrikeOutcome outcome) {
     event.ended = true;
     event.t_s = t_s;
     event.outcome = outcome;
+    event.hand_velocity = hand.velocity;
     event.forearm_to_path_m = is_block(event.move) ? hand.closest_forearm_m : -1.0;
     push(event);
     hand.striking = false;

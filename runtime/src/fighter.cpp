@@ -22,6 +22,7 @@ void Fighter::step(double t_s, const Eigen::Vector3d* head, const UserHands* han
     if (!m_started) begin(t_s);
     track(t_s, head);
     defend(t_s);
+    take_blow(t_s);
     serve_orders(t_s);
     plan(t_s);
     if (m_state == FighterState::strike) play_strike(t_s);
@@ -59,6 +60,33 @@ void Fighter::defend(double t_s) {
     Parts& p = *m_parts;
     const int striking_segment = m_state == FighterState::strike ? p.strike.segment() : -1;
     p.defence.defend(t_s, m_previous_step_s, p.user.hands(), p.user.tracking(), m_state, striking_segment, p.body, p.log);
+}
+
+void Fighter::take_blow(double t_s) {
+    Parts& p = *m_parts;
+    if (p.defence.landed() && m_settings.hit_reactions) {
+        if (!m_blow_pending) m_blow_s = t_s;
+        m_blows = m_blow_pending ? m_blows + 1 : 1;
+        m_blow_pending = true;
+        m_blow = p.defence.landed_strike();
+    }
+    // A strike under way is played out: its limb comes back at the clip's speed (cut short, a kick's leg would drop
+    // from the target at several times a person's speed).
+    if (!m_blow_pending || m_state == FighterState::strike) return;
+    m_blow_pending = false;
+    const HeadingFrame heading = p.body.heading();
+    const Eigen::Vector3d push_in_heading = heading.to_heading(heading.origin + m_blow.hand_velocity) - heading.to_heading(heading.origin);
+    const HitReactions::Choice choice = p.reactions.choose(push_in_heading, m_blow.at_head);
+    FighterEvent event = EventLog::at(FighterEvent::Type::hit_reaction, t_s);
+    event.user_strike = m_blow;
+    event.clip = choice.clip;
+    event.reaction_fit = choice.fit;
+    event.reaction_delay_s = t_s - m_blow_s;
+    event.reaction_blows = m_blows;
+    p.log.push(event);
+    if (choice.clip < 0) return; // no captured reaction: the body goes on (the event says so)
+    enter(FighterState::hit_reaction, t_s);
+    p.player.start(choice.clip, t_s, p.body.mir(), heading, p.body.leg_length());
 }
 
 void Fighter::serve_orders(double t_s) {
@@ -105,6 +133,15 @@ void Fighter::move(double t_s) {
         }
     } else if (m_state == FighterState::recover && t_s - m_state_since_s >= m_settings.recover_s) {
         enter(FighterState::rest, t_s);
+    } else if (m_state == FighterState::hit_reaction) {
+        if (p.player.over(t_s)) { // back to the guard
+            enter(FighterState::recover, t_s);
+            p.player.start(p.footwork.guard_clip(), t_s, p.body.mir(), p.user.facing(p.body.heading()), p.body.leg_length());
+        }
+        p.player.play(t_s, p.body, m_state == FighterState::hit_reaction ? m_settings.reaction_blend_s : m_settings.blend_s);
+        p.defence.apply(t_s, false, p.player.pins(), p.body);
+        show(t_s);
+        return;
     }
     // The band where strikes reach; resting out of it, the fighter steps without waiting for the guard loop to end.
     const double leg = p.body.leg_length(), near_m = p.footwork.near_m(leg), far_m = p.footwork.far_m(p.body, p.user);
@@ -154,7 +191,8 @@ void Fighter::set_character(int index) {
 }
 
 bool Fighter::busy() const {
-    return m_state == FighterState::strike || m_state == FighterState::recover || m_parts->orders.has_pending() || m_parts->defence.active();
+    return m_state == FighterState::strike || m_state == FighterState::recover || m_state == FighterState::hit_reaction || m_parts->orders.has_pending() ||
+           m_parts->defence.active();
 }
 
 // What the fighter tells its callers, read from its parts.

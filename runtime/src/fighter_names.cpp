@@ -12,6 +12,7 @@ const char* fighter_state_name(FighterState state) {
     case FighterState::strike: return "strike";
     case FighterState::recover: return "recover";
     case FighterState::hold: return "hold";
+    case FighterState::hit_reaction: return "hit_reaction";
     }
     return "?";
 }
@@ -49,6 +50,7 @@ const char* fighter_event_name(FighterEvent::Type type) {
     case FighterEvent::Type::order_queued: return "order_queued";
     case FighterEvent::Type::order_performed: return "order_performed";
     case FighterEvent::Type::order_expired: return "order_expired";
+    case FighterEvent::Type::hit_reaction: return "hit_reaction";
     }
     return "?";
 }

@@ -33,6 +33,7 @@ const char* move_kind_name(MoveKind kind) {
     case MoveKind::slip: return "slip";
     case MoveKind::recover: return "recover";
     case MoveKind::hold: return "hold";
+    case MoveKind::hit_reaction: return "hit_reaction";
     }
     return "?";
 }
@@ -100,6 +101,7 @@ bool clip_move_kind(const MotionDatabaseView& db, int clip, MoveKind& kind) {
     if (semantics == "rest") kind = MoveKind::guard;
     else if (semantics.starts_with("step")) kind = MoveKind::step;
     else if (semantics == "block") kind = MoveKind::block;
+    else if (semantics == "hit_reaction") kind = MoveKind::hit_reaction;
     else if (db_clip_is_strike(c) && c.segment >= 0 && c.segment < k_body_part_count) kind = strike_move_kind(static_cast<BodyPart>(c.segment));
     else return false;
     return true;

@@ -16,6 +16,7 @@ MoveKind MotionMeter::move_kind(const Fighter& fighter, const MotionDatabaseView
     case FighterState::approach: return MoveKind::step;
     case FighterState::recover: return MoveKind::recover;
     case FighterState::hold: return MoveKind::hold;
+    case FighterState::hit_reaction: return MoveKind::hit_reaction;
     case FighterState::rest: break;
     }
     return MoveKind::guard;

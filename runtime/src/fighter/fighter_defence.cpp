@@ -42,10 +42,11 @@ void FighterDefence::defend(double t_s, double shown_s, const UserHands& hands, 
         const int striking_limb = limb_of_segment(static_cast<BodyPart>(std::max(0, striking_segment)));
         if (striking_limb == int(Limb::arm_l)) allowed.block_arms[0] = false;
         if (striking_limb == int(Limb::arm_r)) allowed.block_arms[1] = false;
-    } else if (state == FighterState::hold) {
+    } else if (state == FighterState::hold || state == FighterState::hit_reaction) { // rocked by a blow: no defence
         allowed = Defence::Allowed{{false, false}, false};
     }
     m_block_arm.measure_from_shown(m_defence, defender, shown_s);
+    m_landed = false;
     m_defence.update(t_s, hands, defender, allowed);
     if (m_defence.block_started()) m_block_arm.start(m_defence, anatomy, defender, body.mir(), body.heading().yaw_rad, t_s);
     for (const UserStrikeEvent& seen : m_defence.events()) {
@@ -53,6 +54,10 @@ void FighterDefence::defend(double t_s, double shown_s, const UserHands& hands, 
         event.type = seen.ended ? FighterEvent::Type::user_strike_end : FighterEvent::Type::user_strike;
         event.t_s = t_s;
         event.user_strike = seen;
+        if (seen.ended && seen.outcome == UserStrikeOutcome::hit_by_user) {
+            m_landed = true;
+            m_landed_strike = seen;
+        }
         if (seen.ended) { // what the defence did to the body since the last strike ended
             event.joint_limit_violations = m_violations;
             event.foot_shift_m = m_foot_shift_m;

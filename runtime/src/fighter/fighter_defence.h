@@ -4,7 +4,8 @@
 // hold or without a head); the user's strikes told as events; the move's edits (a blocking arm driven onto the
 // hand's course or playing a captured block, a slip's lean) decoded over the pose shown, measured (joint limits,
 // feet). Owns: the Defence, the captured block's arm, the edited frame and what it shows, the edits' measures since
-// the last user strike. Touches: the body (the pose shown), the event log (user_strike, user_strike_end).
+// the last user strike, the blow that landed this frame. Touches: the body (the pose shown), the event log
+// (user_strike, user_strike_end).
 
 #include "fighter/captured_block_arm.h"
 #include "fighter/character_body.h"
@@ -28,6 +29,9 @@ public:
     // strikes.
     void defend(double t_s, double shown_s, const UserHands& hands, bool tracking, FighterState state, int striking_segment, const CharacterBody& body,
                 EventLog& log);
+    // A user strike landed on the head or chest in this frame's defend() (the last one, when both hands did).
+    bool landed() const { return m_landed; }
+    const UserStrikeEvent& landed_strike() const { return m_landed_strike; }
     // After the body moved (the clip played, with the feet's `pins`, or the strike's adapted frame): the move's
     // edits decoded over the pose shown, when one is on.
     void apply(double now_s, bool striking, const LimbPins& pins, CharacterBody& body);
@@ -47,6 +51,8 @@ private:
     LimbPins m_pins;                     // the edits' pins (the feet as shown, the blocking arm's offset)
     int m_violations = 0;                // joint-limit violations of the defence's edits, since the last user strike ended
     double m_foot_shift_m = 0.0;         // how far they moved a foot, since then
+    bool m_landed = false;               // a user strike landed this frame
+    UserStrikeEvent m_landed_strike;
 };
 
 } // namespace kumite

@@ -5,6 +5,7 @@
 #include "fighter/event_log.h"
 #include "fighter/fighter_defence.h"
 #include "fighter/footwork.h"
+#include "fighter/hit_reactions.h"
 #include "fighter/motion_player.h"
 #include "fighter/order_queue.h"
 #include "fighter/speed_limit.h"
@@ -20,7 +21,7 @@ struct Fighter::Parts {
     Parts(const MotionDatabaseView& database, const Retriever& retriever, const std::vector<CharacterRig*>& characters, const FighterSettings& settings,
           std::shared_ptr<const LibrarySpeeds> library_speeds)
         : db(database), speed_limit(library_speeds ? std::move(library_speeds) : measure_library_speeds(database, characters)), user(settings.head_motion), orders(retriever, settings.order_wait_s), footwork(db, settings), player(db, footwork.guard_clip()), strike(db, settings),
-          planner(db, retriever, settings), defence(db, settings.defence),
+          planner(db, retriever, settings), defence(db, settings.defence), reactions(db, *characters.front()),
           body(db, characters, settings.start_x_m, defence.frames(),
                std::array<MirFrame*, 4>{player.frames()[0], player.frames()[1], player.frames()[2], &strike.start_frame()}) {
         int joints = 0;
@@ -38,6 +39,7 @@ struct Fighter::Parts {
     Strike strike;
     StrikePlanner planner;
     FighterDefence defence;
+    HitReactions reactions;
     CharacterBody body; // last: it sizes the frames the others keep
 };
 

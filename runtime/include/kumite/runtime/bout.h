@@ -75,6 +75,10 @@ struct BoutCounters {
     ValueHistogram block_clip_arm_speed_mps{1e-3, 1e3}, synthesized_arm_speed_mps{1e-3, 1e3}, block_clip_speed_ratio{1e-3, 1e3};
     long long defence_joint_limit_violations = 0;
     double defence_foot_shift_m = 0.0; // the largest
+    // The fighter's answers to the blows that landed: how many, from a captured clip, the angle between the clip's
+    // head course and the one the blow asked for, how long after the blow they began.
+    long long hit_reactions = 0, captured_hit_reactions = 0, hit_reaction_blows = 0; // (blows: the landed strikes they answer)
+    ValueHistogram hit_reaction_angle_deg{1e-2, 360.0}, hit_reaction_delay_s{1e-3, 100.0};
     std::vector<std::array<long long, 2>> by_clip; // [database clip] strikes, hits (sized once, at the bout's start)
     double last_contact_error_m = -1.0;         // of the last strike; -1 before any
     bool last_hit = false;

@@ -83,6 +83,7 @@ struct UserStrikeEvent {
     int block_clip = -1;             // block_clip: the database clip played
     double arm_speed_mps = -1.0;     // ended blocks: the fastest the blocking wrist or elbow moved relative to the shoulder
     double clip_arm_speed_mps = -1.0; // block_clip: the same for the captured clip itself, on this arm
+    Eigen::Vector3d hand_velocity = Eigen::Vector3d::Zero(); // ended: the hand's velocity then (world, m/s): how a blow that landed pushes
 };
 
 // The distance between segments [a0, a1] and [b0, b1].

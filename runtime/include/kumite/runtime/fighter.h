@@ -7,7 +7,8 @@
 //
 // States: rest (the guard clip, looped, re-aimed at the user at each loop) -> approach (a step clip towards the
 // distance band where strikes reach, then rest) -> strike (on order, from rest or approach) -> recover (blend back
-// into the guard) -> rest. Without a head for `tracker_timeout_s` it holds still, after `hold_s` returns to rest, and
+// into the guard) -> rest; from any of them, hit_reaction (a user strike landed: a captured reaction played) ->
+// recover. Without a head for `tracker_timeout_s` it holds still, after `hold_s` returns to rest, and
 // stays there until a head comes back. Every transition blends in MIR space over `blend_s`; all motion goes through
 // the MIR, so `set_character` switches skeleton at any time, mid-strike included.
 //
@@ -98,6 +99,8 @@ private:
     void begin(double t_s);                               // the first step: the guard, shown at once
     void track(double t_s, const Eigen::Vector3d* head); // the head: lost (hold) or back (rest); without it no order
     void defend(double t_s);                              // the user's strikes seen, a block or slip started
+    void take_blow(double t_s);                           // a user strike that landed: the hit reaction (a strike
+                                                          // under way is played out first)
     void serve_orders(double t_s);                        // the queue: a waiting order taken when the fighter is free
     void plan(double t_s);                                // the pending order's strike, when the fighter may plan
     void play_strike(double t_s);                         // the strike's frame; its end starts the recovery
@@ -113,6 +116,10 @@ private:
     double m_now_s = 0.0;
     double m_previous_step_s = -1.0; // the step before this one (< 0: none yet)
     bool m_started = false;
+    bool m_blow_pending = false;     // a user strike landed and its hit reaction has not begun
+    UserStrikeEvent m_blow;          // ... the strike (the last, when several landed meanwhile)
+    int m_blows = 0;                 // ... how many landed
+    double m_blow_s = 0.0;           // ... when it landed
 };
 
 } // namespace kumite

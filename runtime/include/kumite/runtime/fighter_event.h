@@ -12,7 +12,7 @@
 
 namespace kumite {
 
-enum class FighterState { rest, approach, strike, recover, hold };
+enum class FighterState { rest, approach, strike, recover, hold, hit_reaction };
 const char* fighter_state_name(FighterState state);
 
 struct FighterEvent {
@@ -20,7 +20,7 @@ struct FighterEvent {
     // order_expired (it waited order_wait_s, or a later order took its place); it starts as order (taken at once)
     // or order_queued (waiting).
     enum class Type { order, ignored_order, state, strike, strike_end, tracker_lost, tracker_back, character, user_strike, user_strike_end,
-                      order_queued, order_performed, order_expired };
+                      order_queued, order_performed, order_expired, hit_reaction };
     Type type = Type::state;
     double t_s = 0.0;
     FighterState state = FighterState::rest; // state events: the new state
@@ -54,6 +54,12 @@ struct FighterEvent {
     UserStrikeEvent user_strike;             // user_strike (seen, the move chosen) and user_strike_end (outcome; its
                                              // joint_limit_violations and foot_shift_m: what the defence did)
     double foot_shift_m = 0.0;
+    double reaction_fit = 0.0;               // hit_reaction events: how nearly the clip's head goes the way the blow
+                                             // pushed (cosine; `clip` the reaction played, -1 none in the database)
+    double reaction_delay_s = 0.0;           // hit_reaction events: from the blow to the reaction (a strike under way
+                                             // is played out first)
+    int reaction_blows = 0;                  // hit_reaction events: the landed strikes it answers (several landed
+                                             // during one strike of the fighter's: one reaction)
     int character = -1;                      // character events
     const char* why = "";                    // ignored and expired orders
     double waited_s = 0.0;                   // order_performed and order_expired: since the order came

@@ -71,6 +71,12 @@ struct FighterSettings {
     // a part that asks for more is shown lagging. Off until the defence reads punches early enough to block at that
     // speed (runtime/README.md, "Human speed").
     bool human_speed = false;
+    // Hit reactions (issue 44): a user strike that lands on the head or chest moves the fighter's head and trunk the
+    // way it pushes, from the database's captured hit reactions (hit_reactions.h), blended in over
+    // `reaction_blend_s`, then back to the guard. A strike under way is played out first. The blend is as long as the
+    // others: over 0.1 s the feet slid onto the clip's stance at 6-9 m/s (the library's reactions move them at 2.4).
+    bool hit_reactions = true;
+    double reaction_blend_s = 0.2;
 };
 inline constexpr int k_max_variety_recent = 8;
 

@@ -22,8 +22,8 @@ namespace kumite {
 
 // The kinds of move, as a frame of the fighter is classified (its state, its strike's segment, its defence) and
 // as a database clip is (its semantics and segment).
-enum class MoveKind { guard, step, punch, kick, knee, elbow, block, slip, recover, hold };
-inline constexpr int k_move_kind_count = 10;
+enum class MoveKind { guard, step, punch, kick, knee, elbow, block, slip, recover, hold, hit_reaction };
+inline constexpr int k_move_kind_count = 11;
 const char* move_kind_name(MoveKind kind);
 // The kind of strike a segment strikes with (hand: punch, foot: kick, knee, elbow).
 MoveKind strike_move_kind(BodyPart segment);
@@ -65,7 +65,7 @@ struct LibrarySpeeds {
 // database): what a Bout measures once for all its fighters.
 std::shared_ptr<const LibrarySpeeds> measure_library_speeds(const MotionDatabaseView& db, const std::vector<CharacterRig*>& characters);
 
-// A clip's kind, or none (a clip of another kind: a hit reaction, a duck, a walk).
+// A clip's kind, or none (a clip of another kind: a duck, a walk).
 bool clip_move_kind(const MotionDatabaseView& db, int clip, MoveKind& kind);
 
 } // namespace kumite
