@@ -74,6 +74,7 @@ struct FighterCounts {
     long long strikes = 0, hits = 0;
     long long user_strikes = 0, blocked = 0, slipped = 0, landed = 0, missed = 0, unfinished = 0, unseen = 0, blocks = 0, slips = 0,
               block_clips = 0;
+    long long hit_reactions = 0, captured_hit_reactions = 0, hit_reaction_blows = 0;
     long long losses = 0;
     double lost_s = 0.0;
 };
@@ -99,6 +100,9 @@ FighterCounts count(const FighterLog& fighter, double duration_s) {
         c.blocks += strike.move == "block" || strike.move == "block_clip" || strike.move == "synthesized";
         c.block_clips += strike.move == "block_clip";
     }
+    c.hit_reactions = fighter.hit_reactions;
+    c.captured_hit_reactions = fighter.captured_hit_reactions;
+    c.hit_reaction_blows = fighter.hit_reaction_blows;
     c.losses = static_cast<long long>(fighter.tracker_losses.size());
     for (const TrackerLoss& loss : fighter.tracker_losses) c.lost_s += (loss.back_s >= 0.0 ? loss.back_s : duration_s) - loss.lost_s;
     return c;
@@ -141,7 +145,10 @@ std::string user_table(const FighterCounts& c) {
            count_row("defended of those that would land", defended, "n-defended", defended + c.landed) +
            count_row("not seen coming", c.unseen, "n-unseen") + count_row("defences: blocks", c.blocks, "n-blocks") +
            count_row("of those, captured blocks", c.block_clips, "n-block-clips", c.blocks) +
-           count_row("defences: slips", c.slips, "n-slips") + "</table>";
+           count_row("defences: slips", c.slips, "n-slips") +
+           count_row("landed strikes answered by a hit reaction", c.hit_reaction_blows, "n-reaction-blows", c.landed) +
+           count_row("hit reactions", c.hit_reactions, "n-hit-reactions") +
+           count_row("of those, captured reactions", c.captured_hit_reactions, "n-captured-reactions", c.hit_reactions) + "</table>";
 }
 
 std::string fighter_title(const SessionLog& log, int index, const FighterLog& fighter) {
@@ -212,7 +219,8 @@ std::string session_html(const SessionLog& log, const nlohmann::json* play_repor
         const FighterCounts c = count(fighter, duration_s);
         for (auto [sum, part] : {std::pair{&total.orders, c.orders}, {&total.performed, c.performed}, {&total.refused, c.refused}, {&total.expired, c.expired},
                                  {&total.strikes, c.strikes}, {&total.hits, c.hits}, {&total.user_strikes, c.user_strikes}, {&total.blocked, c.blocked},
-                                 {&total.slipped, c.slipped}, {&total.landed, c.landed}, {&total.missed, c.missed}}) {
+                                 {&total.slipped, c.slipped}, {&total.landed, c.landed}, {&total.missed, c.missed},
+                                 {&total.hit_reactions, c.hit_reactions}, {&total.hit_reaction_blows, c.hit_reaction_blows}}) {
             *sum += part;
         }
         total.losses = std::max(total.losses, c.losses);
@@ -250,7 +258,9 @@ std::string session_html(const SessionLog& log, const nlohmann::json* play_repor
     html += count_row("strikes", total.strikes, "n-strikes") + count_row("hits", total.hits, "n-hits", total.strikes) +
             count_row("the user's strikes", total.user_strikes, "n-user-strikes") + count_row("blocked", total.blocked, "n-blocked", total.user_strikes) +
             count_row("slipped", total.slipped, "n-slipped", total.user_strikes) + count_row("landed", total.landed, "n-landed", total.user_strikes) +
-            count_row("missed", total.missed, "n-missed", total.user_strikes) + "</table></div>";
+            count_row("missed", total.missed, "n-missed", total.user_strikes) +
+            count_row("hit reactions", total.hit_reactions, "n-hit-reactions") +
+            count_row("landed strikes answered", total.hit_reaction_blows, "n-reaction-blows", total.landed) + "</table></div>";
     html += motion_html(end);
 
     const RoomView view = room_view(log);

@@ -101,7 +101,7 @@ bool SessionLog::add(const nlohmann::json& line) {
     }
     static const char* const k_fighter_types[] = {"order", "order_queued", "order_performed", "order_expired", "ignored_order", "strike",
                                                   "strike_end", "user_strike", "user_strike_end", "character", "tracker_lost",
-                                                  "tracker_back", "fighter_position", "state"};
+                                                  "tracker_back", "fighter_position", "state", "hit_reaction"};
     if (std::none_of(std::begin(k_fighter_types), std::end(k_fighter_types), [&](const char* known) { return type == known; })) {
         ++unknown_lines;
         return true;
@@ -168,6 +168,11 @@ bool SessionLog::add(const nlohmann::json& line) {
         strike->detected = flag(line, "detected", strike->detected);
         if (strike->outcome.empty()) strike->outcome = "unknown";
         log.joint_limit_violations += static_cast<long long>(std::max(0.0, number_or(line, "joint_limit_violations", 0.0)));
+    } else if (type == "hit_reaction") {
+        ++log.hit_reactions;
+        const auto clip = line.find("clip");
+        log.captured_hit_reactions += clip != line.end() && clip->is_string();
+        log.hit_reaction_blows += static_cast<long long>(std::max(1.0, number_or(line, "blows", 1.0)));
     } else if (type == "character") {
         log.characters.push_back({*t, text(line, "character")});
     } else if (type == "tracker_lost") {

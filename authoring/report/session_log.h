@@ -71,6 +71,8 @@ struct FighterLog {
     std::vector<TrackerLoss> tracker_losses;
     std::vector<RoomPoint> positions; // where the fighter stood (on the floor), when it moved
     long long joint_limit_violations = 0;
+    // Its answers to the user's strikes that landed: reactions, from a captured clip, the landed strikes they answer.
+    long long hit_reactions = 0, captured_hit_reactions = 0, hit_reaction_blows = 0;
 };
 
 class SessionLog {

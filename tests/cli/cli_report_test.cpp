@@ -104,6 +104,10 @@ TEST_CASE("cli: report and play --html draw the bout's events, counts equal to t
         CHECK(summary_count(html, "n-blocked") == outcomes["blocked"]);
         CHECK(summary_count(html, "n-slipped") == outcomes["slipped"]);
         CHECK(summary_count(html, "n-landed") == outcomes["hit_by_user"]);
+        // Every strike that landed is answered by a hit reaction (the last may land as the bout ends).
+        CHECK(summary_count(html, "n-hit-reactions") == types["hit_reaction"]);
+        CHECK(summary_count(html, "n-reaction-blows") == report["hit_reactions"]["blows_answered"].get<long long>());
+        CHECK(summary_count(html, "n-reaction-blows") >= outcomes["hit_by_user"] - 1);
         CHECK(occurrences(html, "class=\"tl-strike ") == std::size_t(types["strike"]));
         CHECK(occurrences(html, "class=\"tv-target ") == std::size_t(targets));
         CHECK(occurrences(html, "class=\"tl-character\"") == std::size_t(types["character"]));
