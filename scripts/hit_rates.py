@@ -24,6 +24,7 @@ def main():
     parser.add_argument("--characters", default="kid,scout,brawler,runner,giant")
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--kumite", default=os.path.join(root, "build", "bin", "kumite"))
+    parser.add_argument("--play-args", default="", help="more arguments for kumite play, e.g. --rest-in-reach")
     args = parser.parse_args()
 
     with tempfile.TemporaryDirectory() as work:
@@ -37,23 +38,27 @@ def main():
         table = {}
         for user in args.users.split(","):
             for aim in args.aims.split(","):
-                row = {"strikes": 0, "hits": 0, "by_character": {}}
+                row = {"strikes": 0, "hits": 0, "orders": 0, "performed": 0, "expired": 0, "by_character": {}}
                 for character in args.characters.split(","):
                     report = os.path.join(work, "report.json")
                     command = [args.kumite, "play"] + ([args.db] if args.db else []) + [
                         "--headless", "--duration", str(args.seconds), "--tracker", f"simulate:{user}", "--character", character,
-                        "--commands", f"script:{script}", "--aim", aim, "--seed", str(args.seed), "--report", report]
+                        "--commands", f"script:{script}", "--aim", aim, "--seed", str(args.seed), "--report", report] + args.play_args.split()
                     done = subprocess.run(command, capture_output=True, text=True)
                     if done.returncode != 0:
                         sys.exit(f"hit_rates: {' '.join(command)} failed: {done.stderr.strip()}")
                     figures = json.load(open(report))
                     row["strikes"] += figures["strikes"]
                     row["hits"] += figures["hits"]
+                    row["orders"] += figures["orders"]
+                    row["performed"] += figures["order_outcomes"]["performed"]
+                    row["expired"] += figures["order_outcomes"]["expired"]
                     row["by_character"][character] = {"orders": figures["orders"], "strikes": figures["strikes"], "hits": figures["hits"],
                                                       "prediction_error_m": figures["prediction_error_m"]["median"]}
                 row["hit_rate"] = row["hits"] / max(1, row["strikes"])
                 table.setdefault(user, {})[aim] = row
-                print(f"{user:10s} {aim:9s} {row['hits']}/{row['strikes']} = {row['hit_rate']:.2f}", file=sys.stderr)
+                print(f"{user:10s} {aim:9s} {row['hits']}/{row['strikes']} = {row['hit_rate']:.2f}; orders performed "
+                      f"{row['performed']}/{row['orders']}, expired {row['expired']}", file=sys.stderr)
     print(json.dumps({"seconds": args.seconds, "order_every_s": 2.0, "hit_rates": table}, indent=2))
 
 

@@ -40,7 +40,7 @@ const CommandSpec& play_spec() {
         "play",
         "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:HEAD[,LEFT,RIGHT]] | replay:FILE | simulate:KIND|FILE] "
         "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] "
-        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--human-speed] [--no-hit-reactions] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
+        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--human-speed] [--no-hit-reactions] [--rest-in-reach] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
         "Runs the fighter at 60 Hz against the user's head and hands (a DTrack system, a replayed CSV, or a\n"
         "simulated user) and the supervisor's commands, one per line: punch [left|right] [straight|hook|uppercut]\n"
         "[low|middle|high], kick [left|right] [front|roundhouse|side] [low|middle|high], slash [left|right] [low|middle|high],\n"
@@ -80,6 +80,8 @@ const CommandSpec& play_spec() {
          {"variety", "N", "prefer a clip not used in the last N strikes when one scores within 0.15 of the best (default 6, 0: always the best)"},
          {"human-speed", "", "no joint of the fighter moves faster than the library's fastest for its kind of move (wrists and ankles\n"
                              "never over 12 m/s): a move that asks for more is shown lagging (the report's motion.by_move held_back_frames)"},
+         {"rest-in-reach", "", "between strikes the fighter rests where its strikes reach (as the paper's); default: just out of reach\n"
+                               "(0.8-1.2 leg lengths from the user's head), stepping in to strike and out after"},
          {"no-hit-reactions", "", "a user strike that lands does not move the fighter (default: a captured hit reaction, the way the blow pushed)"},
          {"no-defence", "", "the fighter does not block or slip the user's strikes (also the command 'defence on|off', the viewer's D key)"},
          {"captured-blocks", "", "block punches with the database's captured blocks when one fits: rising at the head, rising or downward at\n"
@@ -216,6 +218,7 @@ int run_play(int argc, char** argv) {
     options.fighter.defence.enabled = !arguments.has("no-defence");
     options.fighter.human_speed = arguments.has("human-speed");
     options.fighter.hit_reactions = !arguments.has("no-hit-reactions");
+    options.fighter.keep_distance = !arguments.has("rest-in-reach");
     options.fighter.defence.captured_blocks = arguments.has("captured-blocks");
     options.fighter.defence.block_clip_max_speed_ratio = *block_speed_limit;
     options.fighter.variety_recent = static_cast<int>(*variety);

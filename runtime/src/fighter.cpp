@@ -143,15 +143,20 @@ void Fighter::move(double t_s) {
         show(t_s);
         return;
     }
-    // The band where strikes reach; resting out of it, the fighter steps without waiting for the guard loop to end.
-    const double leg = p.body.leg_length(), near_m = p.footwork.near_m(leg), far_m = p.footwork.far_m(p.body, p.user);
+    // The band where strikes reach while an order waits, else the fighting distance; resting out of it, the fighter
+    // steps without waiting for the guard loop to end.
+    const double leg = p.body.leg_length();
+    Footwork::Band band = p.orders.has_pending() ? p.footwork.strike_band(p.body, p.user) : p.footwork.rest_band(p.body, p.user);
     const double distance = p.user.distance_from(p.body.heading().origin);
+    // An order that no strike reaches from in the band (a short one: an elbow, a knee) waits for the fighter to step
+    // closer still, a step at a time towards the band's near end.
+    if (p.orders.has_pending() && p.orders.pending().tried && distance <= band.far_m) band.far_m = std::max(band.near_m + 0.25 * leg, distance - 0.25 * leg);
     const bool out_of_range = m_state == FighterState::rest && p.user.tracking() && t_s - m_state_since_s >= m_settings.blend_s &&
-                              (distance > far_m || distance < near_m);
+                              (distance > band.far_m || distance < band.near_m);
     if (p.player.over(t_s) || out_of_range) {
         if (m_state == FighterState::approach) enter(FighterState::rest, t_s);
         // At each loop of the guard: step into the band, or keep guarding, facing the user.
-        const Footwork::Next next = p.footwork.next_clip(m_state == FighterState::rest && p.user.tracking(), distance, near_m, far_m, leg);
+        const Footwork::Next next = p.footwork.next_clip(m_state == FighterState::rest && p.user.tracking(), distance, band, leg);
         if (next.is_step) enter(FighterState::approach, t_s);
         p.player.start(next.clip, t_s, p.body.mir(), p.user.facing(p.body.heading()), leg, next.step_scale, next.is_step);
     }

@@ -9,7 +9,8 @@ namespace kumite {
 
 Footwork::Footwork(const MotionDatabaseView& db, const FighterSettings& settings)
     : m_db(db), m_near_legs(settings.near_legs), m_far_legs(settings.far_legs), m_landing_in_band(settings.landing_in_band),
-      m_min_step_scale(settings.min_step_scale), m_reach_fallback(settings.reach_fallback) {
+      m_min_step_scale(settings.min_step_scale), m_keep_distance(settings.keep_distance), m_rest_near_legs(settings.rest_near_legs),
+      m_rest_far_legs(settings.rest_far_legs), m_reach_fallback(settings.reach_fallback) {
     m_guard_clip = db_first_clip_of(db, "rest");
     if (m_guard_clip < 0) m_guard_clip = 0; // a database without a guard: its first clip stands in
     const char* steps[] = {"step_forward", "step_back", "step_left", "step_right"};
@@ -30,11 +31,23 @@ double Footwork::far_m(const CharacterBody& body, const TrackedUser& user) const
     return user.tracking() ? std::clamp(strike_reach_m(body, user.head(), m_reach_fallback), near + 0.25 * leg, m_far_legs * leg) : m_far_legs * leg;
 }
 
-Footwork::Next Footwork::next_clip(bool resting_with_user, double distance, double near, double far, double leg_length) const {
+Footwork::Band Footwork::strike_band(const CharacterBody& body, const TrackedUser& user) const {
+    // Land in the far part of the band: in reach, without crowding the user's face.
+    return {near_m(body.leg_length()), far_m(body, user), m_landing_in_band};
+}
+
+Footwork::Band Footwork::rest_band(const CharacterBody& body, const TrackedUser& user) const {
+    if (!m_keep_distance) return strike_band(body, user);
+    const double leg = body.leg_length();
+    const double near = std::max(m_rest_near_legs * leg, far_m(body, user));
+    return {near, std::max(m_rest_far_legs * leg, near + 0.25 * leg), 0.5};
+}
+
+Footwork::Next Footwork::next_clip(bool resting_with_user, double distance, const Band& band, double leg_length) const {
     Next next{m_guard_clip, 1.0, false};
     if (!resting_with_user) return next;
-    // Land in the far part of the band: in reach, without crowding the user's face.
-    const double middle = near + m_landing_in_band * (far - near);
+    const double near = band.near_m, far = band.far_m;
+    const double middle = near + band.landing * (far - near);
     if (distance > far && m_step_clips[0] >= 0) next.clip = m_step_clips[0];
     else if (distance < near && m_step_clips[1] >= 0) next.clip = m_step_clips[1];
     if (next.clip != m_guard_clip) {

@@ -1,8 +1,10 @@
 #pragma once
-// Where the fighter stands (fighter.h): the distance band to the user where its strikes reach, and between strikes
-// the next clip: the guard, or a step (forward or back, shortened to land in the band). Owns: the database's guard
-// and step clips, the band's settings. Reads: the body (its reach, its leg length) and the user (the head), given.
-// Footwork that follows or circles a user goes here.
+// Where the fighter stands (fighter.h): two distance bands to the user, pelvis to head on the floor — where its
+// strikes reach (the strike band: it steps in there for an order) and the fighting distance it keeps between
+// strikes (the rest band: just out of its reach, where its strikes and the user's need a step to land) — and between
+// strikes the next clip: the guard, or a step (forward or back, shortened to land in the band). Owns: the database's
+// guard and step clips, the bands' settings. Reads: the body (its reach, its leg length) and the user (the head),
+// given. Footwork that follows or circles a user goes here.
 
 #include "fighter/character_body.h"
 #include "fighter/tracked_user.h"
@@ -22,27 +24,37 @@ public:
     // How far a clip moves the hips, on a character of `leg_length`.
     double stride_m(int clip, double leg_length) const;
 
-    // The band where strikes reach, pelvis to head on the floor: from near_legs leg lengths to the arms' reach
-    // (strike_aim.h), at most far_legs; a quarter leg wide at least, so a shortened step lands inside it. Without a
-    // tracked user, the settings' band.
+    // The band where strikes reach: from near_legs leg lengths to the arms' reach (strike_aim.h), at most far_legs;
+    // a quarter leg wide at least, so a shortened step lands inside it. Without a tracked user, the settings' band.
     double near_m(double leg_length) const { return m_near_legs * leg_length; }
     double far_m(const CharacterBody& body, const TrackedUser& user) const;
 
-    // The clip after the one that ended (or when the fighter rests out of the band): a step into the band, shortened
-    // to land `landing_in_band` of the way from near to far, when the fighter rests with a user tracked `distance`
-    // away out of the band; else the guard.
+    // A band and where in it a step lands (0 near, 1 far).
+    struct Band {
+        double near_m = 0.0, far_m = 0.0, landing = 0.5;
+    };
+    Band strike_band(const CharacterBody& body, const TrackedUser& user) const;
+    // The fighting distance between strikes: from rest_near_legs, and at least the strike band's far end, to
+    // rest_far_legs (a quarter leg wide at least); landing in its middle. With keep_distance off, the strike band.
+    Band rest_band(const CharacterBody& body, const TrackedUser& user) const;
+
+    // The clip after the one that ended (or when the fighter rests out of the band): a step into `band`, shortened
+    // to land where the band says, when the fighter rests with a user tracked `distance` away out of the band; else
+    // the guard.
     struct Next {
         int clip = -1;
         double step_scale = 1.0;
         bool is_step = false; // a step (the fighter approaches), not the guard
     };
-    Next next_clip(bool resting_with_user, double distance, double near, double far, double leg_length) const;
+    Next next_clip(bool resting_with_user, double distance, const Band& band, double leg_length) const;
 
 private:
     const MotionDatabaseView& m_db;
     int m_guard_clip = -1;
     std::array<int, 4> m_step_clips{-1, -1, -1, -1}; // forward, back, left, right
     double m_near_legs, m_far_legs, m_landing_in_band, m_min_step_scale;
+    bool m_keep_distance;
+    double m_rest_near_legs, m_rest_far_legs;
     bool m_reach_fallback;
 };
 

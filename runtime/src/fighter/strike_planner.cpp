@@ -59,7 +59,10 @@ StrikePlanner::Outcome StrikePlanner::plan(double t_s, FighterAim aim, bool appr
         // that takes too long, it strikes at the head as the paper's fighter does.
         const int step = footwork.step_forward_clip();
         const double distance = user.distance_from(body.heading().origin);
-        const bool closer_helps = approaching || (step >= 0 && distance > footwork.far_m(body, user));
+        // (A short strike — an elbow, a knee — may not reach from inside the band either: closer helps while the
+        // fighter is not yet at its near end.)
+        const double closer_m = footwork.near_m(body.leg_length()) + 0.25 * body.leg_length();
+        const bool closer_helps = approaching || (step >= 0 && distance > std::min(closer_m, footwork.far_m(body, user)));
         // ... and when steps at the step clip's pace can close the gap in the time left to wait.
         const double step_s = step >= 0 ? (m_db.clips[step].frame_count - 1) * double(m_db.meta.frame_time_s) : 0.0;
         const double step_speed_mps = step_s > 0.0 ? footwork.stride_m(step, body.leg_length()) / step_s : 0.0;
@@ -67,7 +70,10 @@ StrikePlanner::Outcome StrikePlanner::plan(double t_s, FighterAim aim, bool appr
         const bool in_time = distance - footwork.far_m(body, user) < step_speed_mps * time_left_s;
         // A walking user may also come within reach by themselves: predicted aim watches for it.
         const bool user_may_come = aim == FighterAim::predicted && user.motion().velocity().norm() > 0.2;
-        if (waiting_allowed && closer_helps && (in_time || user_may_come)) {
+        // A step under way may finish (the fighter now rests out of reach and steps in for an order): up to twice
+        // the wait.
+        const bool step_may_finish = approaching && t_s - pending.since_s < 2.0 * m_wait_for_reach_s;
+        if ((waiting_allowed || step_may_finish) && closer_helps && (in_time || user_may_come || step_may_finish)) {
             orders.wait_for_reach(last % parts);
             return Outcome::waiting;
         }

@@ -42,6 +42,12 @@ struct FighterSettings {
     double far_legs = 1.05;          // reach, in leg lengths; the far end comes closer when the arms cannot reach
                                      // the head from there (a short fighter, a tall user): see strike_reach_m()
     double landing_in_band = 0.7;    // steps are shortened (feet locked) to land this far from near to far
+    // The fighting distance kept between strikes (issue 44): just out of reach, from rest_near_legs (at least the
+    // strike band's far end) to rest_far_legs leg lengths, pelvis to head on the floor; the fighter steps in to
+    // strike and out after. Off: it rests in the strike band, as the paper's fighter does.
+    bool keep_distance = true;
+    double rest_near_legs = 0.8;
+    double rest_far_legs = 1.2;
     double min_step_scale = 0.15;    // the shortest step, as a fraction of the clip's
     double blend_s = 0.2;
     double recover_s = 0.3;
