@@ -65,6 +65,12 @@ void Defence::reset() {
     m_weight = 0.0;
 }
 
+void Defence::cancel_move() {
+    m_move = DefenceMove::none;
+    m_move_hand = -1;
+    m_weight = 0.0;
+}
+
 void Defence::push(const UserStrikeEvent& event) {
     if (m_event_count < static_cast<int>(m_events.size())) m_events[m_event_count++] = event;
 }

@@ -86,7 +86,10 @@ void Fighter::take_blow(double t_s) {
     p.log.push(event);
     if (choice.clip < 0) return; // no captured reaction: the body goes on (the event says so)
     enter(FighterState::hit_reaction, t_s);
-    p.player.start(choice.clip, t_s, p.body.mir(), heading, p.body.leg_length());
+    // Blended in from the pose shown (a block's or slip's edits included: the move stops here, its arm goes on
+    // from where it was).
+    p.player.start(choice.clip, t_s, p.defence.shown() ? p.defence.shown_mir() : p.body.mir(), heading, p.body.leg_length());
+    p.defence.cancel_move();
 }
 
 void Fighter::serve_orders(double t_s) {

@@ -42,7 +42,9 @@ void FighterDefence::defend(double t_s, double shown_s, const UserHands& hands, 
         const int striking_limb = limb_of_segment(static_cast<BodyPart>(std::max(0, striking_segment)));
         if (striking_limb == int(Limb::arm_l)) allowed.block_arms[0] = false;
         if (striking_limb == int(Limb::arm_r)) allowed.block_arms[1] = false;
-    } else if (state == FighterState::hold || state == FighterState::hit_reaction) { // rocked by a blow: no defence
+    } else if (state == FighterState::hit_reaction) { // rocked by a blow: the arms may still cover, the trunk is the reaction's
+        allowed.slip = false;
+    } else if (state == FighterState::hold) {
         allowed = Defence::Allowed{{false, false}, false};
     }
     m_block_arm.measure_from_shown(m_defence, defender, shown_s);
@@ -83,6 +85,7 @@ void FighterDefence::apply(double now_s, bool striking, const LimbPins& pins_sho
     // arm's natural wrist below).
     if (striking) rig.decoder.decode(body.pose(), body.mir());
     const auto before = striking ? rig.adapter.positions() : rig.decoder.model_positions();
+    const double trunk_before = trunk_turn(anatomy, rig.decoder.model_rotations()); // the undefended trunk's turn
     // What the edits must not break, measured against the undefended pose: the arms' bends, the trunk, the feet.
     std::array<Eigen::Vector3d, 2> bends, ankles;
     for (int side = 0; side < 2; ++side) {
@@ -149,7 +152,9 @@ void FighterDefence::apply(double now_s, bool striking, const LimbPins& pins_sho
     body.encode(m_shown_mir);
     m_shown = true;
     const auto after = rig.decoder.model_positions();
-    unsigned violations = trunk_turn(anatomy, rig.decoder.model_rotations()) > JointLimits{}.trunk_turn_rad ? k_trunk_violation : 0u;
+    // The trunk over its limit, when the edits turned it further (a reaction's fold near the limit, leaned on more).
+    const double trunk_after = trunk_turn(anatomy, rig.decoder.model_rotations());
+    unsigned violations = trunk_after > JointLimits{}.trunk_turn_rad && trunk_after > trunk_before + 1e-9 ? k_trunk_violation : 0u;
     for (int side = 0; side < 2; ++side) {
         const int limb = side == 0 ? int(Limb::arm_l) : int(Limb::arm_r);
         const LimbChain& arm = anatomy.limbs[limb];

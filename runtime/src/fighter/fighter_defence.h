@@ -23,6 +23,7 @@ public:
     const Defence& defence() const { return m_defence; }
     bool active() const { return m_defence.active(); } // a move is on (orders wait)
     void reset();                                      // the tracker lost the user, another character: no move
+    void cancel_move() { m_defence.cancel_move(); }    // a blow landed: the move gives way to the hit reaction
 
     // One frame, before the body moves: the user's `hands` against the body shown last frame (at `shown_s`), the
     // moves `state` allows (`striking_segment`: the strike's body part, while striking), the events of the user's

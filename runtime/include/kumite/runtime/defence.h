@@ -108,6 +108,7 @@ public:
         update(t_s, hands, body, can_start ? Allowed{} : Allowed{{false, false}, false});
     }
     void reset(); // tracking lost, a character switch: forget hands and moves
+    void cancel_move(); // a blow landed: the move stops (the hands are still followed)
 
     bool active() const { return m_move != DefenceMove::none; } // a move is on (orders wait)
     // This frame's edits: the block's arm, weight and wrist target; the slip's weight and head offset.
