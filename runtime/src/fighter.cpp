@@ -116,6 +116,7 @@ void Fighter::play_strike(double t_s) {
     p.strike.play(t_s, p.body, p.user);
     p.defence.apply(t_s, true, p.player.pins(), p.body); // a block with the free arm
     show(t_s);
+    if (m_settings.human_speed) p.strike.held_back(p.speed_limit.shown_share(limb_of_segment(static_cast<BodyPart>(std::max(0, p.strike.segment())))));
     p.strike.measure(t_s, p.body, p.user, p.log); // the contact as shown
     if (!p.strike.over()) return;
     p.strike.end(t_s, p.log);

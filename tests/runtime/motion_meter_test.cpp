@@ -202,6 +202,35 @@ TEST_CASE("fighter: no joint moves faster than the library's fastest for its kin
     CHECK(free_meter.fastest_overall().wrist_mps > k_human_extremity_mps);
 }
 
+TEST_CASE("fighter: held to human speed, strikes land later instead of short, and the limbs under their bar are not held",
+          "[runtime][corpus]") {
+    const MotionDatabaseContent* content = kumite::test::reference_database();
+    if (!content) return;
+    FighterSettings settings;
+    settings.human_speed = true;
+    kumite::test::Bout bout(content->view(), "brawler", settings);
+    const Eigen::Vector3d head(0.0, 1.6, 1.5);
+    int ordered = 0;
+    bout.run(0, 40 * 60, [&](double t) -> std::optional<Eigen::Vector3d> {
+        if (t >= 1.0 + 2.0 * ordered && ordered < 19) bout.fighter->order(bout.retriever->semantics_id(ordered++ % 2 ? "kick" : "punch"), Side::none);
+        return head;
+    });
+    int strikes = 0, hits = 0;
+    double worst_contact_m = 0.0;
+    for (const FighterEvent& e : bout.events) {
+        if (e.type != FighterEvent::Type::strike) continue;
+        ++strikes;
+        hits += e.hit;
+        worst_contact_m = std::max(worst_contact_m, e.contact_error_m);
+    }
+    const auto& held = bout.fighter->held_back_frames();
+    INFO(strikes << " strikes, " << hits << " hits, the hit point at most " << worst_contact_m << " m from the target at the contact; frames held back in punches " << held[int(MoveKind::punch)] << ", kicks " << held[int(MoveKind::kick)]);
+    CHECK(strikes >= 15);
+    CHECK(held[int(MoveKind::punch)] + held[int(MoveKind::kick)] > 0); // the adaptation asked for more than the library's somewhere
+    CHECK(hits >= 0.9 * strikes); // ... and the strikes still reached the head
+    CHECK(worst_contact_m < 0.12);
+}
+
 TEST_CASE("joint speeds: the bar of each kind of move", "[runtime]") {
     std::array<JointSpeeds, k_move_kind_count> library{};
     library[int(MoveKind::guard)] = {0.3, 0.1, 0.2, 1.5};

@@ -27,6 +27,7 @@ struct Fighter::Parts {
         int joints = 0;
         for (const CharacterRig* character : characters) joints = std::max(joints, character->skeleton().joint_count());
         speed_limit.reserve(joints);
+        speed_limit.map_limbs(characters);
     }
 
     const MotionDatabaseView db; // the parts' references point here

@@ -2,9 +2,10 @@
 
 #include <algorithm>
 
-
 namespace kumite {
 namespace {
+
+constexpr Limb k_sample_limbs[4] = {Limb::arm_l, Limb::arm_r, Limb::leg_l, Limb::leg_r}; // LimbSample's order
 
 // `out` part of the way from `from` to `to` (share in [0, 1]); the three poses are of one skeleton.
 void blend_pose(Pose& out, const Pose& from, const Pose& to, double share) {
@@ -13,6 +14,16 @@ void blend_pose(Pose& out, const Pose& from, const Pose& to, double share) {
     for (std::size_t j = 0; j < to.local_translations.size() && j < from.local_translations.size(); ++j) {
         out.local_translations[j] = from.local_translations[j] + share * (to.local_translations[j] - from.local_translations[j]);
     }
+}
+
+// `out` as `to`, except each limb's joints part of the way from `from` by that limb's share.
+void blend_limbs(Pose& out, const Pose& from, const Pose& to, const std::vector<int>& limb_of_joint, const std::array<double, 4>& share) {
+    out.root_translation = to.root_translation;
+    for (std::size_t j = 0; j < to.local_rotations.size(); ++j) {
+        const int limb = j < limb_of_joint.size() ? limb_of_joint[j] : -1;
+        out.local_rotations[j] = limb < 0 ? to.local_rotations[j] : from.local_rotations[j].slerp(share[std::size_t(limb)], to.local_rotations[j]);
+    }
+    for (std::size_t j = 0; j < to.local_translations.size(); ++j) out.local_translations[j] = to.local_translations[j];
 }
 
 } // namespace
@@ -26,44 +37,118 @@ void SpeedLimit::reserve(int joints) {
     }
 }
 
-double SpeedLimit::over_bar(const LimbSample& sample, const JointSpeeds& bar, double dt_s) const {
-    const JointSpeeds speeds = joint_speeds(m_last_sample, sample, dt_s);
+void SpeedLimit::map_limbs(const std::vector<CharacterRig*>& characters) {
+    m_limb_of_joint.clear();
+    for (const CharacterRig* character : characters) {
+        const Skeleton& skeleton = character->skeleton();
+        std::vector<int> limb_of(std::size_t(skeleton.joint_count()), -1);
+        for (int k = 0; k < 4; ++k) limb_of[std::size_t(character->anatomy().limbs[int(k_sample_limbs[k])].root)] = k;
+        for (int j = 1; j < skeleton.joint_count(); ++j) { // parents come first: a limb's joints and all below them
+            if (limb_of[std::size_t(j)] < 0) limb_of[std::size_t(j)] = limb_of[std::size_t(skeleton.parents[std::size_t(j)])];
+        }
+        m_limb_of_joint.push_back(std::move(limb_of));
+    }
+}
+
+std::array<double, 4> SpeedLimit::limb_ratios(const LimbSample& sample, const JointSpeeds& bar, double dt_s) const {
     auto ratio = [](double value, double limit) { return limit > 0.0 ? value / limit : 0.0; };
-    return std::max({ratio(speeds.wrist_mps, bar.wrist_mps), ratio(speeds.ankle_mps, bar.ankle_mps), ratio(speeds.elbow_radps, bar.elbow_radps),
-                     ratio(speeds.knee_radps, bar.knee_radps)});
+    std::array<double, 4> ratios{};
+    for (int k = 0; k < 4; ++k) {
+        const bool arm = k < 2;
+        const double travel = (sample.extremity[k] - m_last_sample.extremity[k]).norm() / dt_s;
+        const double bend = std::abs(sample.flexion_rad[k] - m_last_sample.flexion_rad[k]) / dt_s;
+        ratios[std::size_t(k)] = std::max(ratio(travel, arm ? bar.wrist_mps : bar.ankle_mps), ratio(bend, arm ? bar.elbow_radps : bar.knee_radps));
+    }
+    return ratios;
+}
+
+bool SpeedLimit::hold_limbs(const JointSpeeds& bar, double dt_s, const std::array<double, 4>& asked_ratios, CharacterBody& body) {
+    if (std::size_t(body.index()) >= m_limb_of_joint.size()) return false;
+    const std::vector<int>& limb_of_joint = m_limb_of_joint[std::size_t(body.index())];
+    const RestAnatomy& anatomy = body.anatomy();
+    // Per limb over its bar: the largest share known under it (0: its joints as last shown, assumed under until
+    // measured), the smallest known over it, the next to try; the limbs under their bar stay as asked.
+    std::array<double, 4> under{}, above{}, share{};
+    for (std::size_t k = 0; k < 4; ++k) {
+        const bool over = asked_ratios[k] > 1.0;
+        under[k] = over ? 0.0 : 1.0;
+        above[k] = 1.0;
+        share[k] = over ? 1.0 / asked_ratios[k] : 1.0;
+    }
+    for (int refine = 0; refine < 10; ++refine) {
+        blend_limbs(body.pose(), m_last, m_asked, limb_of_joint, share);
+        body.show_edited_pose();
+        const std::array<double, 4> ratios = limb_ratios(LimbSample::of(anatomy, body.positions()), bar, dt_s);
+        bool settled = true;
+        for (std::size_t k = 0; k < 4; ++k) {
+            if (asked_ratios[k] <= 1.0) continue;
+            if (ratios[k] <= 1.001) under[k] = share[k];
+            else above[k] = share[k];
+            const bool close = (ratios[k] <= 1.001 && ratios[k] >= 0.98) || above[k] - under[k] <= 1e-3;
+            settled = settled && close;
+            const double estimate = ratios[k] > 1e-6 ? share[k] / ratios[k] : above[k];
+            share[k] = close ? under[k] : estimate > under[k] && estimate < above[k] ? estimate : 0.5 * (under[k] + above[k]);
+        }
+        if (settled) break;
+    }
+    blend_limbs(body.pose(), m_last, m_asked, limb_of_joint, under);
+    body.show_edited_pose();
+    // A limb the trunk alone carries too fast (a turn, a lunge) is over its bar with its own joints held: the whole
+    // pose is held instead.
+    const std::array<double, 4> ratios = limb_ratios(LimbSample::of(anatomy, body.positions()), bar, dt_s);
+    if (*std::max_element(ratios.begin(), ratios.end()) > 1.001) return false;
+    m_shown_share = under;
+    return true;
+}
+
+void SpeedLimit::hold_pose(const JointSpeeds& bar, double dt_s, double over, CharacterBody& body) {
+    const RestAnatomy& anatomy = body.anatomy();
+    // Part of the way: the share that brings the fastest joint to its bar. Estimated from the speeds (near linear in
+    // the share over one frame) and refined between the largest share known under the bar (0: the last pose, no
+    // speed at all) and the smallest known over it; the one under the bar is shown.
+    auto over_bar = [&](const LimbSample& sample) {
+        const std::array<double, 4> ratios = limb_ratios(sample, bar, dt_s);
+        return *std::max_element(ratios.begin(), ratios.end());
+    };
+    double under = 0.0, above = 1.0, share = 1.0 / over;
+    for (int refine = 0; refine < 10 && above - under > 1e-3; ++refine) {
+        blend_pose(body.pose(), m_last, m_asked, share);
+        body.show_edited_pose();
+        const double ratio = over_bar(LimbSample::of(anatomy, body.positions()));
+        if (ratio <= 1.001) {
+            under = share;
+            if (ratio >= 0.98) break;
+        } else {
+            above = share;
+        }
+        const double estimate = ratio > 1e-6 ? share / ratio : above;
+        share = estimate > under && estimate < above ? estimate : 0.5 * (under + above);
+    }
+    if (share != under) {
+        blend_pose(body.pose(), m_last, m_asked, under);
+        body.show_edited_pose();
+    }
+    m_shown_share = {under, under, under, under};
 }
 
 void SpeedLimit::apply(double t_s, MoveKind kind, CharacterBody& body) {
     const RestAnatomy& anatomy = body.anatomy();
     const double dt_s = t_s - m_last_s;
+    m_shown_share = {1.0, 1.0, 1.0, 1.0};
     const bool comparable = m_has_last && m_character == body.index() && dt_s > 0.0 && m_library &&
                             body.index() < int(m_library->per_character.size());
     if (comparable) {
         const JointSpeeds bar = speed_bar(m_library->per_character[std::size_t(body.index())], kind);
         const LimbSample asked = LimbSample::of(anatomy, body.positions());
-        double over = over_bar(asked, bar, dt_s);
+        const std::array<double, 4> ratios = limb_ratios(asked, bar, dt_s);
+        const double over = *std::max_element(ratios.begin(), ratios.end());
         if (over > 1.0) {
-            // Part of the way: the share that brings the fastest joint to its bar. Estimated from the speeds (near
-            // linear in the share over one frame) and refined between the largest share known under the bar (0: the
-            // last pose, no speed at all) and the smallest known over it; the one under the bar is shown.
+            // The limbs over their bar held back on their own (a punch's leg that lunges too fast does not slow its
+            // fist); when the trunk itself carries one too fast, the whole pose.
             m_asked = body.pose();
-            double under = 0.0, above = 1.0, share = 1.0 / over;
-            for (int refine = 0; refine < 10 && above - under > 1e-3; ++refine) {
-                blend_pose(body.pose(), m_last, m_asked, share);
-                body.show_edited_pose();
-                const double ratio = over_bar(LimbSample::of(anatomy, body.positions()), bar, dt_s);
-                if (ratio <= 1.001) {
-                    under = share;
-                    if (ratio >= 0.98) break;
-                } else {
-                    above = share;
-                }
-                const double estimate = ratio > 1e-6 ? share / ratio : above;
-                share = estimate > under && estimate < above ? estimate : 0.5 * (under + above);
-            }
-            if (share != under) {
-                blend_pose(body.pose(), m_last, m_asked, under);
-                body.show_edited_pose();
+            if (!hold_limbs(bar, dt_s, ratios, body)) {
+                body.pose() = m_asked;
+                hold_pose(bar, dt_s, over, body);
             }
             // What comes next (a blend, a strike) starts from the pose shown, not from the one asked for.
             body.encode(body.mir());

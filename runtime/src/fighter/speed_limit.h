@@ -1,10 +1,11 @@
 #pragma once
 // The last word on the pose shown (fighter.h; issue 44, "human speed, everywhere"): no wrist, ankle, elbow or knee
 // of the fighter moves faster than the library's fastest for the kind of move the frame is (speed_bar), and no wrist
-// or ankle faster than a person's (k_human_extremity_mps). A pose that would is shown only part of the way from the
-// last one shown — every joint's local rotation and the root slerped by the share that keeps the fastest joint at its
-// bar — so the body lags what the other parts asked for and catches up as they slow: what cannot be done at human
-// speed is not shown faster. Owns the last pose shown, its measures and the counts of held frames. Touches the
+// or ankle faster than a person's (k_human_extremity_mps). A limb that would is shown only part of the way from the
+// last pose shown — its joints' local rotations slerped by the share that keeps its wrist or ankle and its elbow or
+// knee at their bars — the trunk and the other limbs as asked; when the trunk itself carries a limb too fast (a
+// turn, a lunge), the whole pose is (every joint and the root by one share). The body lags what the other parts
+// asked for and catches up as they slow: what cannot be done at human speed is not shown faster. Owns the last pose shown, its measures and the counts of held frames. Touches the
 // body's pose (it replaces it with the one shown) and, when it holds one back, its MIR frame (encoded from the pose
 // shown: the next blend or strike starts there). Reads the library's speeds on each character.
 
@@ -12,7 +13,9 @@
 
 #include "kumite/runtime/joint_speeds.h"
 
+#include <array>
 #include <memory>
+#include <vector>
 
 namespace kumite {
 
@@ -22,6 +25,9 @@ public:
     explicit SpeedLimit(std::shared_ptr<const LibrarySpeeds> library);
     // Sized for poses of up to `joints` joints: nothing allocates after.
     void reserve(int joints);
+    // Which limb each joint of each character belongs to (its arm's or leg's root and everything below): once, at
+    // construction.
+    void map_limbs(const std::vector<CharacterRig*>& characters);
 
     // The next pose is shown as it is (the first frame, a new character).
     void reset() { m_has_last = false; }
@@ -32,9 +38,16 @@ public:
     // left behind the pose asked for (m).
     const std::array<long long, k_move_kind_count>& held_frames() const { return m_held_frames; }
     double largest_lag_m() const { return m_largest_lag_m; }
+    // The share of the way from the last pose to the asked one this frame showed, per limb (arm l, arm r, leg l,
+    // leg r; Limb's order; 1: all of it, not held back).
+    double shown_share(int limb) const { return limb >= 0 && limb < 4 ? m_shown_share[std::size_t(limb)] : 1.0; }
 
 private:
-    double over_bar(const LimbSample& sample, const JointSpeeds& bar, double dt_s) const;
+    // Each limb's fastest measure against its bar (> 1: over), from the last pose shown to `sample`.
+    std::array<double, 4> limb_ratios(const LimbSample& sample, const JointSpeeds& bar, double dt_s) const;
+    // The limbs over their bar held back on their own; false when that is not enough (the trunk carries one too fast).
+    bool hold_limbs(const JointSpeeds& bar, double dt_s, const std::array<double, 4>& asked_ratios, CharacterBody& body);
+    void hold_pose(const JointSpeeds& bar, double dt_s, double over, CharacterBody& body); // the whole pose, one share
 
     std::shared_ptr<const LibrarySpeeds> m_library;
     bool m_has_last = false;
@@ -45,6 +58,8 @@ private:
     Pose m_asked;             // scratch: this frame's asked pose
     std::array<long long, k_move_kind_count> m_held_frames{};
     double m_largest_lag_m = 0.0;
+    std::array<double, 4> m_shown_share{1.0, 1.0, 1.0, 1.0};
+    std::vector<std::vector<int>> m_limb_of_joint; // [character][joint]: 0-3 (LimbSample's order), -1 the trunk
 };
 
 } // namespace kumite

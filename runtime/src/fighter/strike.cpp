@@ -23,6 +23,8 @@ double Strike::try_plan(const RetrievalResult& found, const Eigen::Vector3d& tar
 void Strike::start(double t_s, const Purpose& purpose) {
     m_purpose = purpose;
     m_start_s = t_s;
+    m_clock_s = m_clock_before_s = 0.0;
+    m_last_play_s = t_s;
     m_contact_done = false;
     m_contact_now = false;
     m_over = false;
@@ -77,7 +79,10 @@ void Strike::steer(double to_contact_s, CharacterBody& body, const TrackedUser& 
 void Strike::play(double t_s, CharacterBody& body, const TrackedUser& user) {
     StrikeAdapter& adapter = body.current().adapter;
     // Frames of the database's rate, as a fractional index; the contact frame is played exactly.
-    double index = (t_s - m_start_s) / m_db.meta.frame_time_s;
+    m_clock_before_s = m_clock_s;
+    m_clock_s += t_s - m_last_play_s;
+    m_last_play_s = t_s;
+    double index = m_clock_s / m_db.meta.frame_time_s;
     const double contact = adapter.contact_index();
     // The database's frame time is a float: a frame landing on the contact can come out a few 1e-7 short of it.
     if (!m_contact_done && index >= contact - 1e-4) index = contact;
@@ -98,6 +103,12 @@ void Strike::play(double t_s, CharacterBody& body, const TrackedUser& user) {
     m_contact_now = at_contact;
     if (at_contact) m_contact_done = true;
     m_over = index >= adapter.frame_count() - 1;
+}
+
+void Strike::held_back(double share) {
+    if (share >= 1.0) return;
+    m_clock_s = m_clock_before_s + share * (m_clock_s - m_clock_before_s);
+    m_over = false;
 }
 
 void Strike::measure(double t_s, CharacterBody& body, const TrackedUser& user, EventLog& log) {

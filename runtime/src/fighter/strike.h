@@ -40,6 +40,10 @@ public:
     // One frame: the adapted pose onto the body (its MIR frame encoded again), the contact judged (the impact taken
     // or followed through).
     void play(double t_s, CharacterBody& body, const TrackedUser& user);
+    // The speed limit showed only `share` of this frame's step (human speed): the strike's own clock moves on by that
+    // share of the frame, so the clip is played no faster than the body can follow it; a contact held back comes
+    // again next frame (the strike lands later, at a person's speed, instead of short of its target).
+    void held_back(double share);
     // The same frame as shown (after the defence's edits and the speed limit): the contact told from the hit point
     // shown (error, hit, speed), the time held at the target, the body's MIR frame encoded from the pose shown.
     void measure(double t_s, CharacterBody& body, const TrackedUser& user, EventLog& log);
@@ -62,6 +66,9 @@ private:
     Purpose m_purpose;
     MirFrame m_start_frame;
     double m_start_s = 0.0;
+    double m_clock_s = 0.0;          // the strike's own time since it began (slower than the bout's when held back)
+    double m_clock_before_s = 0.0;   // ... at the frame before
+    double m_last_play_s = 0.0;      // when play() last ran
     bool m_contact_done = false;
     bool m_contact_now = false;      // this frame is the contact (play() to measure())
     bool m_over = false;
