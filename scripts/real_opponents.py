@@ -96,7 +96,7 @@ def main():
                          "queued": orders.get("queued", 0), "expired": orders.get("expired", 0),
                          "ignored": report["ignored_orders"], "strikes": report["strikes"], "hits": report["hits"],
                          "user_seen": user["seen"], "blocked": user["blocked"], "slipped": user["slipped"],
-                         "blocks": user["blocks"], "block_clips": user.get("block_clips", 0),
+                         "blocks": user["blocks"], "slips": user.get("slips", 0), "block_clips": user.get("block_clips", 0),
                          "landed": user["hit_by_user"], "user_missed": user["missed"],
                          "joint_limit_violations": report["joint_limit_violations"] + user["joint_limit_violations"],
                          "defence_foot_shift_m": user["foot_shift_m"],
