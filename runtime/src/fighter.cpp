@@ -172,6 +172,7 @@ void Fighter::move(double t_s) {
 void Fighter::show(double t_s) {
     Parts& p = *m_parts;
     if (m_settings.human_speed) p.speed_limit.apply(t_s, MotionMeter::move_kind(*this, p.db), p.body);
+    p.defence.note_shown_arm(t_s, p.body);
     p.body.update_heading();
 }
 

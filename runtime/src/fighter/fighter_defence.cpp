@@ -73,6 +73,7 @@ void FighterDefence::defend(double t_s, double shown_s, const UserHands& hands, 
 
 void FighterDefence::apply(double now_s, bool striking, const LimbPins& pins_shown, CharacterBody& body) {
     m_shown = false;
+    m_arm_to_note = -1;
     const double block = m_defence.block_weight(), slip = m_defence.slip_weight();
     // A captured block's arm held back to its clip's speed may still be on its way to the guard when the move ends:
     // it goes on there at that speed (not in one frame), unless the fighter strikes or moves again.
@@ -163,11 +164,17 @@ void FighterDefence::apply(double now_s, bool striking, const LimbPins& pins_sho
         m_foot_shift_m = std::max(m_foot_shift_m, (ankle - ankles[side]).norm());
     }
     m_violations += joint_violation_count(violations);
-    if (block > 0.0 || lagging) {
-        // The blocking arm's fastest move relative to its shoulder, for the block's event.
-        const Eigen::Vector3d wrist = after[block_chain.extremity] - after[block_chain.root], elbow = after[block_chain.middle] - after[block_chain.root];
-        m_block_arm.note_shown(m_defence, wrist, elbow, now_s);
-    }
+    m_arm_to_note = block > 0.0 || lagging ? block_limb : -1; // measured as shown (note_shown_arm)
+}
+
+void FighterDefence::note_shown_arm(double now_s, const CharacterBody& body) {
+    if (m_arm_to_note < 0) return;
+    // The blocking arm's fastest move relative to its shoulder, for the block's event: on the pose shown, after the
+    // speed limit (what the user saw, not what the edits asked for).
+    const LimbChain& chain = body.anatomy().limbs[m_arm_to_note];
+    const auto shown = body.positions();
+    m_block_arm.note_shown(m_defence, shown[chain.extremity] - shown[chain.root], shown[chain.middle] - shown[chain.root], now_s);
+    m_arm_to_note = -1;
 }
 
 } // namespace kumite

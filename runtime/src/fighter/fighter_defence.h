@@ -36,6 +36,8 @@ public:
     // After the body moved (the clip played, with the feet's `pins`, or the strike's adapted frame): the move's
     // edits decoded over the pose shown, when one is on.
     void apply(double now_s, bool striking, const LimbPins& pins, CharacterBody& body);
+    // After the speed limit: the blocking arm's speed as shown, for the block's event (when apply() edited one).
+    void note_shown_arm(double now_s, const CharacterBody& body);
 
     // The pose shown with the edits, in the MIR (for a recording), and whether this frame's pose carries them.
     bool shown() const { return m_shown; }
@@ -52,6 +54,7 @@ private:
     LimbPins m_pins;                     // the edits' pins (the feet as shown, the blocking arm's offset)
     int m_violations = 0;                // joint-limit violations of the defence's edits, since the last user strike ended
     double m_foot_shift_m = 0.0;         // how far they moved a foot, since then
+    int m_arm_to_note = -1;              // the limb apply() moved as a block this frame (its speed is noted as shown)
     bool m_landed = false;               // a user strike landed this frame
     UserStrikeEvent m_landed_strike;
 };
