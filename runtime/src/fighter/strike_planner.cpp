@@ -32,6 +32,9 @@ StrikePlanner::Outcome StrikePlanner::plan(double t_s, FighterAim aim, bool appr
     // is changing course (just turned, stopped or started: the extrapolation would be wrong).
     const bool waiting_allowed = t_s - pending.since_s < m_wait_for_reach_s;
     if (aim == FighterAim::predicted && waiting_allowed && user.motion().ready() && !user.motion().settled()) return Outcome::waiting;
+    // A user pressed against the fighter (nearer than the strike band) is not struck from there: it steps back first
+    // (the footwork's step out of the band), as long as the order may wait.
+    if (waiting_allowed && user.tracking() && user.distance_from(body.heading().origin) < footwork.near_m(body.leg_length())) return Outcome::waiting;
     // The first round looks at every part, as many per step as the planning budget lets it (all at once unless many
     // fighters plan in the same frame); while the order waits, one part per frame, in turn from the head down (each
     // look is a retrieval and the adaptation's planning: a hundred fighters waiting at once stay cheap).

@@ -7,9 +7,16 @@ namespace kumite {
 
 TrackedUser::Change TrackedUser::take_head(double t_s, const Eigen::Vector3d* head, double timeout_s, EventLog& log) {
     if (head) {
+        // A tracker slower than the bout (a headset's runtime at 20 Hz) hands the same head to several steps: only a
+        // new one is a sample of its motion (the same one again a step later would read as a head that stopped, then
+        // jumped). The same head for 0.1 s or more is a head that holds still (a simulated one, a held pose).
+        const bool new_sample = !m_have_head || !m_tracking || *head != m_head || t_s - m_last_sample_s >= 0.1;
         m_head = *head;
         m_last_head_s = t_s;
-        m_head_motion.update(t_s, m_head);
+        if (new_sample) {
+            m_head_motion.update(t_s, m_head);
+            m_last_sample_s = t_s;
+        }
         const bool back = !m_tracking && m_have_head;
         if (back) log.push(EventLog::at(FighterEvent::Type::tracker_back, t_s));
         m_have_head = m_tracking = true;

@@ -39,6 +39,7 @@ private:
     bool m_tracking = false;
     Eigen::Vector3d m_head = Eigen::Vector3d::Zero();
     double m_last_head_s = -1e9;
+    double m_last_sample_s = -1e9; // when the head last changed (or held still 0.1 s): the motion filter's last sample
     HeadMotionFilter m_head_motion;
     UserHands m_hands;
 };
