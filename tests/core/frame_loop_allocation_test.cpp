@@ -176,3 +176,28 @@ TEST_CASE("bout: a step allocates nothing while captured blocks, limited to thei
     CHECK(scope.count() == 0);
     CHECK((*bout)->counters().block_clips >= 3);
 }
+
+TEST_CASE("bout: a step allocates nothing while landed blows are answered by hit reactions, held to human speed", "[core][corpus]") {
+    const MotionDatabaseContent* content = kumite::test::reference_database(); // the golden database holds no reactions
+    if (!content) return;
+    const kumite::test::StandingCharacter brawler("brawler", content->view());
+    Result<std::unique_ptr<HeadTracker>> tracker = HeadTracker::open("simulate:punch", DtrackConfig{}, 5);
+    REQUIRE(tracker);
+    BoutOptions options;
+    options.fighter.defence.enabled = false; // every punch that arrives lands
+    options.fighter.human_speed = true;      // the limbs held by the speed limit, one by one
+    Result<std::unique_ptr<Bout>> bout = Bout::create(content->view(), {{"brawler", brawler.file, nullptr}}, std::move(*tracker), options);
+    REQUIRE(bout);
+    (*bout)->step(0.0);
+    kumite::test::AllocationScope scope;
+    for (int frame = 1; frame < 20 * 60; ++frame) {
+        if (frame % 120 == 0) CHECK((*bout)->command(frame % 240 ? "kick" : "punch"));
+        (*bout)->step(frame / 60.0);
+    }
+    CHECK(scope.count() == 0);
+    CHECK((*bout)->counters().hit_reactions >= 3);
+    CHECK((*bout)->counters().strikes >= 3);
+    long long held = 0;
+    for (long long frames : (*bout)->fighter(0).held_back_frames()) held += frames;
+    CHECK(held > 0);
+}
