@@ -137,24 +137,16 @@ void Fighter::move(double t_s) {
         }
     } else if (m_state == FighterState::recover && t_s - m_state_since_s >= m_settings.recover_s) {
         enter(FighterState::rest, t_s);
-    } else if (m_state == FighterState::hit_reaction) {
-        if (p.player.over(t_s)) { // back to the guard
-            enter(FighterState::recover, t_s);
-            p.player.start(p.footwork.guard_clip(), t_s, p.body.mir(), p.user.facing(p.body.heading()), p.body.leg_length());
-        }
-        p.player.play(t_s, p.body, m_state == FighterState::hit_reaction ? m_settings.reaction_blend_s : m_settings.blend_s);
-        p.defence.apply(t_s, false, p.player.pins(), p.body);
-        show(t_s);
-        return;
+    } else if (m_state == FighterState::hit_reaction && p.player.over(t_s)) { // back to the guard
+        enter(FighterState::recover, t_s);
+        p.player.start(p.footwork.guard_clip(), t_s, p.body.mir(), p.user.facing(p.body.heading()), p.body.leg_length());
     }
-    // The band where strikes reach while an order waits, else the fighting distance; resting out of it, the fighter
-    // steps without waiting for the guard loop to end.
+    // The band where strikes reach while an order waits (closer still when no strike reached from in it: an elbow,
+    // a knee), else the fighting distance; resting out of it, the fighter steps without waiting for the guard loop.
     const double leg = p.body.leg_length();
-    Footwork::Band band = p.orders.has_pending() ? p.footwork.strike_band(p.body, p.user) : p.footwork.rest_band(p.body, p.user);
     const double distance = p.user.distance_from(p.body.heading().origin);
-    // An order that no strike reaches from in the band (a short one: an elbow, a knee) waits for the fighter to step
-    // closer still, a step at a time towards the band's near end.
-    if (p.orders.has_pending() && p.orders.pending().tried && distance <= band.far_m) band.far_m = std::max(band.near_m + 0.25 * leg, distance - 0.25 * leg);
+    const Footwork::Band band = p.orders.has_pending() ? p.footwork.strike_band(p.body, p.user, p.orders.pending().tried ? distance : -1.0)
+                                                       : p.footwork.rest_band(p.body, p.user);
     const bool out_of_range = m_state == FighterState::rest && p.user.tracking() && t_s - m_state_since_s >= m_settings.blend_s &&
                               (distance > band.far_m || distance < band.near_m);
     if (p.player.over(t_s) || out_of_range) {
@@ -164,7 +156,8 @@ void Fighter::move(double t_s) {
         if (next.is_step) enter(FighterState::approach, t_s);
         p.player.start(next.clip, t_s, p.body.mir(), p.user.facing(p.body.heading()), leg, next.step_scale, next.is_step);
     }
-    p.player.play(t_s, p.body, m_settings.blend_s);
+    // A blow is answered over its own blend (the reaction's); everything else over the fighter's.
+    p.player.play(t_s, p.body, m_state == FighterState::hit_reaction ? m_settings.reaction_blend_s : m_settings.blend_s);
     p.defence.apply(t_s, false, p.player.pins(), p.body);
     show(t_s);
 }

@@ -24,6 +24,18 @@ MotionDatabase golden() {
     return std::move(*opened);
 }
 
+// A bout of the brawler on the reference database against a simulated punching user (seed 5), stepped once; null
+// without the reference database.
+std::unique_ptr<Bout> punching_bout_on_reference(const MotionDatabaseContent& content, const BoutOptions& options) {
+    const kumite::test::StandingCharacter brawler("brawler", content.view());
+    Result<std::unique_ptr<HeadTracker>> tracker = HeadTracker::open("simulate:punch", DtrackConfig{}, 5);
+    REQUIRE(tracker);
+    Result<std::unique_ptr<Bout>> bout = Bout::create(content.view(), {{"brawler", brawler.file, nullptr}}, std::move(*tracker), options);
+    REQUIRE(bout);
+    (*bout)->step(0.0);
+    return std::move(*bout);
+}
+
 } // namespace
 
 TEST_CASE("retrieval: fast and exhaustive queries allocate nothing", "[core]") {
@@ -162,42 +174,32 @@ TEST_CASE("bout: a step allocates nothing against a recorded boxer, steering str
 TEST_CASE("bout: a step allocates nothing while captured blocks, limited to their clip's speed, meet a punching user", "[core][corpus]") {
     const MotionDatabaseContent* content = kumite::test::reference_database(); // the golden database holds no blocks
     if (!content) return;
-    const kumite::test::StandingCharacter brawler("brawler", content->view());
-    Result<std::unique_ptr<HeadTracker>> tracker = HeadTracker::open("simulate:punch", DtrackConfig{}, 5);
-    REQUIRE(tracker);
     BoutOptions options;
     options.fighter.defence.captured_blocks = true;
     options.fighter.defence.block_clip_max_speed_ratio = 1.0;
-    Result<std::unique_ptr<Bout>> bout = Bout::create(content->view(), {{"brawler", brawler.file, nullptr}}, std::move(*tracker), options);
-    REQUIRE(bout);
-    (*bout)->step(0.0);
+    const std::unique_ptr<Bout> bout = punching_bout_on_reference(*content, options);
     kumite::test::AllocationScope scope;
-    for (int frame = 1; frame < 20 * 60; ++frame) (*bout)->step(frame / 60.0);
+    for (int frame = 1; frame < 20 * 60; ++frame) bout->step(frame / 60.0);
     CHECK(scope.count() == 0);
-    CHECK((*bout)->counters().block_clips >= 3);
+    CHECK(bout->counters().block_clips >= 3);
 }
 
 TEST_CASE("bout: a step allocates nothing while landed blows are answered by hit reactions, held to human speed", "[core][corpus]") {
     const MotionDatabaseContent* content = kumite::test::reference_database(); // the golden database holds no reactions
     if (!content) return;
-    const kumite::test::StandingCharacter brawler("brawler", content->view());
-    Result<std::unique_ptr<HeadTracker>> tracker = HeadTracker::open("simulate:punch", DtrackConfig{}, 5);
-    REQUIRE(tracker);
     BoutOptions options;
     options.fighter.defence.enabled = false; // every punch that arrives lands
     options.fighter.human_speed = true;      // the limbs held by the speed limit, one by one
-    Result<std::unique_ptr<Bout>> bout = Bout::create(content->view(), {{"brawler", brawler.file, nullptr}}, std::move(*tracker), options);
-    REQUIRE(bout);
-    (*bout)->step(0.0);
+    const std::unique_ptr<Bout> bout = punching_bout_on_reference(*content, options);
     kumite::test::AllocationScope scope;
     for (int frame = 1; frame < 20 * 60; ++frame) {
-        if (frame % 120 == 0) CHECK((*bout)->command(frame % 240 ? "kick" : "punch"));
-        (*bout)->step(frame / 60.0);
+        if (frame % 120 == 0) CHECK(bout->command(frame % 240 ? "kick" : "punch"));
+        bout->step(frame / 60.0);
     }
     CHECK(scope.count() == 0);
-    CHECK((*bout)->counters().hit_reactions >= 3);
-    CHECK((*bout)->counters().strikes >= 3);
+    CHECK(bout->counters().hit_reactions >= 3);
+    CHECK(bout->counters().strikes >= 3);
     long long held = 0;
-    for (long long frames : (*bout)->fighter(0).held_back_frames()) held += frames;
+    for (long long frames : bout->fighter(0).held_back_frames()) held += frames;
     CHECK(held > 0);
 }

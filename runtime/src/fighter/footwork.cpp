@@ -28,19 +28,25 @@ double Footwork::stride_m(int clip, double leg_length) const {
 
 double Footwork::far_m(const CharacterBody& body, const TrackedUser& user) const {
     const double leg = body.leg_length(), near = near_m(leg);
-    return user.tracking() ? std::clamp(strike_reach_m(body, user.head(), m_reach_fallback), near + 0.25 * leg, m_far_legs * leg) : m_far_legs * leg;
+    return user.tracking() ? std::clamp(strike_reach_m(body, user.head(), m_reach_fallback), near + k_min_band_legs * leg, m_far_legs * leg)
+                           : m_far_legs * leg;
 }
 
-Footwork::Band Footwork::strike_band(const CharacterBody& body, const TrackedUser& user) const {
+Footwork::Band Footwork::strike_band(const CharacterBody& body, const TrackedUser& user, double closer_than_m) const {
     // Land in the far part of the band: in reach, without crowding the user's face.
-    return {near_m(body.leg_length()), far_m(body, user), m_landing_in_band};
+    const double leg = body.leg_length();
+    Band band{near_m(leg), far_m(body, user), m_landing_in_band};
+    if (closer_than_m >= 0.0 && closer_than_m <= band.far_m) {
+        band.far_m = std::max(band.near_m + k_min_band_legs * leg, closer_than_m - k_min_band_legs * leg);
+    }
+    return band;
 }
 
 Footwork::Band Footwork::rest_band(const CharacterBody& body, const TrackedUser& user) const {
     if (!m_keep_distance) return strike_band(body, user);
     const double leg = body.leg_length();
     const double near = std::max(m_rest_near_legs * leg, far_m(body, user));
-    return {near, std::max(m_rest_far_legs * leg, near + 0.25 * leg), 0.5};
+    return {near, std::max(m_rest_far_legs * leg, near + k_min_band_legs * leg), 0.5};
 }
 
 Footwork::Next Footwork::next_clip(bool resting_with_user, double distance, const Band& band, double leg_length) const {

@@ -33,7 +33,11 @@ public:
     struct Band {
         double near_m = 0.0, far_m = 0.0, landing = 0.5;
     };
-    Band strike_band(const CharacterBody& body, const TrackedUser& user) const;
+    // With `closer_than_m` >= 0 (the user's distance, when no strike reached from in the band), its far end comes a
+    // band's least width nearer than that, down to the least width from its near end: a step at a time closer.
+    Band strike_band(const CharacterBody& body, const TrackedUser& user, double closer_than_m = -1.0) const;
+    // The least width of a band (leg lengths): a shortened step lands inside it.
+    static constexpr double k_min_band_legs = 0.25;
     // The fighting distance between strikes: from rest_near_legs, and at least the strike band's far end, to
     // rest_far_legs (a quarter leg wide at least); landing in its middle. With keep_distance off, the strike band.
     Band rest_band(const CharacterBody& body, const TrackedUser& user) const;

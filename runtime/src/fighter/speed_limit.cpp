@@ -7,6 +7,23 @@ namespace {
 
 constexpr Limb k_sample_limbs[4] = {Limb::arm_l, Limb::arm_r, Limb::leg_l, Limb::leg_r}; // LimbSample's order
 
+// The search for the share of a step that brings a measure to its bar: the largest share known under the bar (0: the
+// last pose, no speed at all), the smallest known over it, the next to try — estimated from the ratio (near linear in
+// the share over one frame), else halfway. Done once the ratio is just under the bar or the bracket is closed.
+struct ShareSearch {
+    double under = 0.0, above = 1.0, share = 1.0;
+    explicit ShareSearch(double asked_ratio) : share(1.0 / asked_ratio) {}
+    // The ratio measured at `share`; true when done (`under` is the answer).
+    bool measured(double ratio) {
+        if (ratio <= 1.001) under = share;
+        else above = share;
+        if ((ratio <= 1.001 && ratio >= 0.98) || above - under <= 1e-3) return true;
+        const double estimate = ratio > 1e-6 ? share / ratio : above;
+        share = estimate > under && estimate < above ? estimate : 0.5 * (under + above);
+        return false;
+    }
+};
+
 // `out` part of the way from `from` to `to` (share in [0, 1]); the three poses are of one skeleton.
 void blend_pose(Pose& out, const Pose& from, const Pose& to, double share) {
     out.root_translation = from.root_translation + share * (to.root_translation - from.root_translation);
@@ -66,30 +83,27 @@ bool SpeedLimit::hold_limbs(const JointSpeeds& bar, double dt_s, const std::arra
     if (std::size_t(body.index()) >= m_limb_of_joint.size()) return false;
     const std::vector<int>& limb_of_joint = m_limb_of_joint[std::size_t(body.index())];
     const RestAnatomy& anatomy = body.anatomy();
-    // Per limb over its bar: the largest share known under it (0: its joints as last shown, assumed under until
-    // measured), the smallest known over it, the next to try; the limbs under their bar stay as asked.
-    std::array<double, 4> under{}, above{}, share{};
+    // A search per limb over its bar (its joints as last shown assumed under it until measured); the limbs under
+    // their bar stay as asked (share 1).
+    std::array<ShareSearch, 4> searches{ShareSearch(1.0), ShareSearch(1.0), ShareSearch(1.0), ShareSearch(1.0)};
+    std::array<double, 4> share{}, under{};
+    std::array<bool, 4> done{};
     for (std::size_t k = 0; k < 4; ++k) {
-        const bool over = asked_ratios[k] > 1.0;
-        under[k] = over ? 0.0 : 1.0;
-        above[k] = 1.0;
-        share[k] = over ? 1.0 / asked_ratios[k] : 1.0;
+        done[k] = asked_ratios[k] <= 1.0;
+        if (!done[k]) searches[k] = ShareSearch(asked_ratios[k]);
+        share[k] = searches[k].share;
+        under[k] = done[k] ? 1.0 : 0.0;
     }
-    for (int refine = 0; refine < 10; ++refine) {
+    for (int refine = 0; refine < 10 && !(done[0] && done[1] && done[2] && done[3]); ++refine) {
         blend_limbs(body.pose(), m_last, m_asked, limb_of_joint, share);
         body.show_edited_pose();
         const std::array<double, 4> ratios = limb_ratios(LimbSample::of(anatomy, body.positions()), bar, dt_s);
-        bool settled = true;
         for (std::size_t k = 0; k < 4; ++k) {
             if (asked_ratios[k] <= 1.0) continue;
-            if (ratios[k] <= 1.001) under[k] = share[k];
-            else above[k] = share[k];
-            const bool close = (ratios[k] <= 1.001 && ratios[k] >= 0.98) || above[k] - under[k] <= 1e-3;
-            settled = settled && close;
-            const double estimate = ratios[k] > 1e-6 ? share[k] / ratios[k] : above[k];
-            share[k] = close ? under[k] : estimate > under[k] && estimate < above[k] ? estimate : 0.5 * (under[k] + above[k]);
+            done[k] = searches[k].measured(ratios[k]);
+            under[k] = searches[k].under;
+            share[k] = done[k] ? under[k] : searches[k].share;
         }
-        if (settled) break;
     }
     blend_limbs(body.pose(), m_last, m_asked, limb_of_joint, under);
     body.show_edited_pose();
@@ -103,32 +117,19 @@ bool SpeedLimit::hold_limbs(const JointSpeeds& bar, double dt_s, const std::arra
 
 void SpeedLimit::hold_pose(const JointSpeeds& bar, double dt_s, double over, CharacterBody& body) {
     const RestAnatomy& anatomy = body.anatomy();
-    // Part of the way: the share that brings the fastest joint to its bar. Estimated from the speeds (near linear in
-    // the share over one frame) and refined between the largest share known under the bar (0: the last pose, no
-    // speed at all) and the smallest known over it; the one under the bar is shown.
-    auto over_bar = [&](const LimbSample& sample) {
-        const std::array<double, 4> ratios = limb_ratios(sample, bar, dt_s);
-        return *std::max_element(ratios.begin(), ratios.end());
-    };
-    double under = 0.0, above = 1.0, share = 1.0 / over;
-    for (int refine = 0; refine < 10 && above - under > 1e-3; ++refine) {
-        blend_pose(body.pose(), m_last, m_asked, share);
+    // Part of the way: the share that brings the fastest joint to its bar; the one found under the bar is shown.
+    ShareSearch search(over);
+    for (int refine = 0; refine < 10; ++refine) {
+        blend_pose(body.pose(), m_last, m_asked, search.share);
         body.show_edited_pose();
-        const double ratio = over_bar(LimbSample::of(anatomy, body.positions()));
-        if (ratio <= 1.001) {
-            under = share;
-            if (ratio >= 0.98) break;
-        } else {
-            above = share;
-        }
-        const double estimate = ratio > 1e-6 ? share / ratio : above;
-        share = estimate > under && estimate < above ? estimate : 0.5 * (under + above);
+        const std::array<double, 4> ratios = limb_ratios(LimbSample::of(anatomy, body.positions()), bar, dt_s);
+        if (search.measured(*std::max_element(ratios.begin(), ratios.end()))) break;
     }
-    if (share != under) {
-        blend_pose(body.pose(), m_last, m_asked, under);
+    if (search.share != search.under) { // the last one tried was over the bar
+        blend_pose(body.pose(), m_last, m_asked, search.under);
         body.show_edited_pose();
     }
-    m_shown_share = {under, under, under, under};
+    m_shown_share = {search.under, search.under, search.under, search.under};
 }
 
 void SpeedLimit::apply(double t_s, MoveKind kind, CharacterBody& body) {

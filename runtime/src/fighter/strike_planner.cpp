@@ -64,7 +64,7 @@ StrikePlanner::Outcome StrikePlanner::plan(double t_s, FighterAim aim, bool appr
         const double distance = user.distance_from(body.heading().origin);
         // (A short strike — an elbow, a knee — may not reach from inside the band either: closer helps while the
         // fighter is not yet at its near end.)
-        const double closer_m = footwork.near_m(body.leg_length()) + 0.25 * body.leg_length();
+        const double closer_m = footwork.near_m(body.leg_length()) + Footwork::k_min_band_legs * body.leg_length();
         const bool closer_helps = approaching || (step >= 0 && distance > std::min(closer_m, footwork.far_m(body, user)));
         // ... and when steps at the step clip's pace can close the gap in the time left to wait.
         const double step_s = step >= 0 ? (m_db.clips[step].frame_count - 1) * double(m_db.meta.frame_time_s) : 0.0;
