@@ -64,7 +64,9 @@ int play_xr(Bout& bout, const Arguments& arguments, double duration_s, const std
                  {"wait_us", times_json(outcome.wait_us)},
                  {"supervisor_window", outcome.supervisor_window},
                  {"supervisor_renderer", outcome.supervisor_renderer},
-                 {"paused_s", outcome.paused_s}};
+                 {"paused_s", outcome.paused_s},
+                 {"cores_allowed", outcome.cores_allowed},
+                 {"software_raster_threads", outcome.software_raster_threads.empty() ? nlohmann::json("mesa default") : nlohmann::json(outcome.software_raster_threads)}};
     if (!outcome.eye_image.path.empty()) {
         const view::XrEyeImage& e = outcome.eye_image;
         xr_report["eye_image"] = {{"path", e.path}, {"t", e.t_s}, {"width", e.width}, {"height", e.height}, {"eye", "left"},

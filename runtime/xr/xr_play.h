@@ -54,6 +54,10 @@ struct XrPlayOutcome {
     std::string supervisor_renderer; // what drew it
     double paused_s = 0.0;           // bout time held still by the supervisor (Space)
     bool supervisor_screenshot_failed = false;
+    // Mesa's software rasteriser's worker threads (LP_NUM_THREADS) as the run had them: "0" set by kumite when the
+    // process may use one core only, the user's own value, or "" (Mesa's default: one per core).
+    std::string software_raster_threads;
+    int cores_allowed = 0;
 };
 
 // Runs the session. Returns 0, or 1 when no session could be started (the message already on stderr).

@@ -4,7 +4,9 @@
 // llvmpipe's threads share it). For 1 and 4 fighters (or --fighters LIST), at the null compositor's view size and at
 // 2016x2240 per eye (a Valve Index-class headset). The user stands still 1.5 m in front of the fighters, hands up.
 // The baseline, measured in the same run: the same bout headless (kumite play --headless, no XR, no drawing), its
-// per-step time; a 20 Hz runtime frame carries three steps.
+// per-step time; a 20 Hz runtime frame carries three steps. On one core kumite keeps llvmpipe's drawing in its own
+// thread (LP_NUM_THREADS=0); the runtime-size run is repeated with Mesa's default, a worker per core of the machine,
+// as the before.
 //
 // usage (under scripts/with_monado.sh): xr_frame_bench KUMITE [--seconds S] [--fighters 1,4] [--core N] [--character NAME]
 // (default: --xr's own, the human body)
@@ -13,12 +15,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <thread>
+#include <utility>
 
 using namespace kumite::test;
 
@@ -68,11 +73,14 @@ int main(int argc, char** argv) {
                                      std::to_string(seconds) + " --tracker simulate:still --report " + baseline_report + " > /dev/null 2>&1";
         const int baseline_status = std::system(headless.c_str());
         const nlohmann::json baseline = read_json(baseline_report);
-        for (const std::string& size : {std::string(), std::string("2016x2240")}) {
-            const std::string report_path = (folder / ("xr-" + fighters + "-" + (size.empty() ? "runtime" : size) + ".json")).string();
+        const std::string cores_of_machine = std::to_string(std::max(1u, std::thread::hardware_concurrency()));
+        for (const auto& [size, raster_threads] : {std::pair<std::string, std::string>{"", ""}, {"", cores_of_machine}, {"2016x2240", ""}}) {
+            const std::string report_path =
+                (folder / ("xr-" + fighters + "-" + (size.empty() ? "runtime" : size) + "-" + raster_threads + ".json")).string();
             // --headless: no supervisor's window drawing on the same core.
             std::vector<std::string> command = {taskset, "-c", core, kumite, "play", "--xr", "--headless", "--fighters", fighters, "--duration",
                                                 std::to_string(seconds), "--report", report_path};
+            if (!raster_threads.empty()) command.insert(command.begin(), {"/usr/bin/env", "LP_NUM_THREADS=" + raster_threads});
             if (!size.empty()) command.insert(command.end(), {"--xr-view-size", size});
             if (!character.empty()) command.insert(command.end(), {"--character", character});
             const KumiteRun run = run_kumite_xr(command, (folder / "kumite.out").string(), port, seconds + 90.0, [](double, RemoteData& data) {
@@ -88,6 +96,8 @@ int main(int argc, char** argv) {
             if (report.is_object() && report.contains("xr")) {
                 const nlohmann::json& xr = report["xr"];
                 entry["view_size_px"] = xr["view_size_px"], entry["swapchain_size_px"] = xr["swapchain_size_px"];
+                entry["software_raster_threads"] = xr.value("software_raster_threads", nlohmann::json());
+                if (!raster_threads.empty()) entry["before"] = "Mesa's default: a rasteriser thread per core of the machine";
                 entry["frames_waited"] = xr["frames_waited"], entry["frames_submitted"] = xr["frames_submitted"], entry["errors"] = xr["errors"];
                 entry["frame_work_us"] = figures(xr["frame_work_us"]);
                 entry["render_us"] = figures(xr["render_us"]);
