@@ -104,9 +104,8 @@ struct Session {
 // worker thread per core it was built for and hand each triangle bin to them: the workers only take turns with the
 // thread that waits for them, and each hand-off is a chance for the scheduler to run something else first (on the
 // bench's one core, nine runs without them: frame work median 2.9-3.3 ms, p99 3.9-4.7 ms; with them, median
-// 3.0-3.5 ms, p99 3.9-6.5 ms). So with one core allowed
-// and no LP_NUM_THREADS of the user's, the drawing stays in the calling thread. Hardware drivers ignore the variable.
-// Must run before the first OpenGL or Vulkan context is made.
+// 3.0-3.5 ms, p99 3.9-6.5 ms). So with one core allowed and no LP_NUM_THREADS of the user's, the drawing stays in
+// the calling thread. Hardware drivers ignore the variable. Must run before the first OpenGL or Vulkan context.
 void software_raster_threads_for_cores(XrPlayOutcome& outcome) {
     cpu_set_t allowed;
     CPU_ZERO(&allowed);

@@ -2,9 +2,10 @@
 // exports KUMITE_XR_REMOTE_PORT): this program starts `kumite play --xr`, drives Monado's remote driver over TCP
 // as the user would move, and checks the report, the events and the user track kumite recorded.
 //   xr_bout_check bout KUMITE DB.kdb CAPTURE.bvh OUT_DIR [DURATION_S]
-//     a recorded boxer's head and hands (CAPTURE may list several, comma-separated: one bout each; CaptureUser: placed 1.2 m in front of the fighter, facing it), the head
-//     turning +-0.3 rad, the right controller's A pressed once at 12 s and untracked from 20 to 21 s; the supervisor orders a punch every 2 s
-//     (predicted aim). DB.kdb `default`: the reference database.
+//     a recorded boxer's head and hands (CaptureUser: placed 1.2 m in front of the fighter, facing it), the head
+//     turning +-0.3 rad, the right controller's A pressed once at 12 s and untracked from 20 to 21 s; the supervisor
+//     orders a punch every 2 s (predicted aim). CAPTURE may list several, comma-separated: a bout each, checked on
+//     its own, the strikes landed pooled. DB.kdb `default`: the reference database.
 //   xr_bout_check eye KUMITE DB.kdb - OUT_DIR
 //     a still user 2.5 m away; the left eye's image must show the fighter where its joints project, and the
 //     supervisor's window beside the headset must have been drawn.
