@@ -15,7 +15,8 @@ Scores per performer (hits matched one to one, same semantics and side, within 0
 - blocks as strikes: block moves with any strike proposed within 0.25 s of them (a one-technique block capture is
   one move and counts if any strike is proposed in it), over all block moves;
 - block recall: annotated blocks matched by a proposed block (a two-handed cover matches either arm);
-- block precision: proposed blocks that match one, in the captures whose blocks are all annotated (not the kata's).
+- block precision: proposed blocks that match one (a two-handed cover is a block of each arm), in the captures whose
+  blocks are all annotated (not the kata's).
 Strikes proposed in captures nobody annotated (walks, dances: not fights) are counted apart, per performer.
 
   python3 scripts/suggest_lopo.py [--kumite build/bin/kumite] [--grid scripts/suggest_lopo_grid.json] [--json OUT]
@@ -134,8 +135,12 @@ def score_capture(source, moves, proposals, frame_rate):
     matched_p = {j for _, j in matched}
     neutral = sum(1 for j, p in enumerate(strikes) if j not in matched_p and
                   any(abs(s['hit_frame'] - p['hit_frame']) <= tolerance for s in slashes))
-    block_fit = lambda m, p: m['side'] in (p['side'], 'both')
-    blocks_found = len(match(block_moves, blocks, tolerance, block_fit))
+    # A two-handed cover is a block of each arm: either arm proposed finds it, and both arms proposed are both right.
+    arm_moves = [(index, side) for index, m in enumerate(block_moves) for side in (('left', 'right') if m['side'] == 'both' else (m['side'],))]
+    arm_pairs = match([dict(block_moves[index], side=side) for index, side in arm_moves], blocks, tolerance,
+                      lambda m, p: m['side'] == p['side'])
+    blocks_found = len({arm_moves[i][0] for i, _ in arm_pairs})
+    blocks_right = len(arm_pairs)
     one_technique = source.startswith('hachaj-shorinryu/')
     if one_technique:
         taken = int(bool(block_moves) and bool(strikes))
@@ -146,7 +151,7 @@ def score_capture(source, moves, proposals, frame_rate):
     return collections.Counter(annotated=len(strike_moves), proposed=len(strikes) - neutral, matched=len(matched),
                                block_moves=len(block_moves), blocks_as_strikes=taken, blocks_found=blocks_found,
                                blocks_proposed_known=len(blocks) if blocks_known else 0,
-                               blocks_found_known=blocks_found if blocks_known else 0)
+                               blocks_found_known=blocks_right if blocks_known else 0)
 
 
 def frame_rates(mocap, sources, fps):
@@ -197,6 +202,8 @@ def objective(f):
         terms.append(f['precision'] / 0.9)
     if f['blocks_as_strikes'] is not None:
         terms.append((1.0 - f['blocks_as_strikes']) / 0.95)
+    if f['block_recall'] is not None:
+        terms.append(f['block_recall'] / 0.8)
     return min(terms) if terms else 0.0
 
 

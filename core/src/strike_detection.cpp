@@ -1,5 +1,6 @@
 #include "kumite/core/strike_detection.h"
 
+#include "strike_covers.h"
 #include "strike_swings.h"
 
 #include "kumite/core/root_from_feet.h"
@@ -29,6 +30,10 @@ constexpr double k_straight_arm_deg = 165.0; // an elbow opened this far is a st
 constexpr double k_thrust_window_s = 0.1;  // how long before the hit a punch's fist is seen travelling along its forearm
 constexpr double k_punch_thrust = 0.2;     // cosine between that travel and the forearm, at least
 constexpr double k_punch_forearm_down = -0.45; // sine of the forearm's slope below which it points down (27 degrees): a low sweep
+// A hand raised this close to a punch of its own is the punch's wind-up or return to the guard, and this close to
+// the other hand's punch the guard kept up behind it (a boxer's uppercuts and straights): not a cover.
+constexpr double k_cover_own_strike_s = 0.75;
+constexpr double k_cover_other_strike_s = 0.5;
 
 using LimbTrack = std::vector<std::array<Eigen::Vector3d, k_limb_count>>; // [frame][limb] one joint of each limb
 
@@ -118,7 +123,7 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
     LimbTrack extremity(frames), middle(frames), root(frames);
     std::vector<double> head_y(frames, 0.0), part_distance(frames, 0.0);
     std::vector<Eigen::Vector3d> hips_forward(frames, Eigen::Vector3d::UnitZ()); // on the floor plane
-    std::vector<Eigen::Vector3d> pelvis_position(frames);
+    std::vector<Eigen::Vector3d> pelvis_position(frames), head_position(frames);
     const int pelvis = map.joint(BodyPart::pelvis);
     const int chest = map.joint(BodyPart::chest);
     const int head = map.joint(BodyPart::head);
@@ -158,6 +163,7 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
             root[frame][limb] = positions[chain.root];
         }
         head_y[frame] = positions[head].y();
+        head_position[frame] = positions[head];
         pelvis_position[frame] = positions[pelvis];
         hips_forward[frame] = Eigen::Vector3d(pelvis_forward.x(), 0.0, pelvis_forward.z()).normalized();
         if (part_joint >= 0) part_distance[frame] = (positions[part_joint] - positions[pelvis]).norm() / part_rest_distance;
@@ -397,6 +403,27 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
             // A knee strike is driven up fast; a knee lifted into a stance (a kata's crane, a turn) rises slowly.
             if (fastest_over(middle, limb, hit, speed_window, dt, anatomy.leg_length) < k_knee_speed) continue;
             add(StrikeSemantics::knee, parts[1], side, hit, knee_rise, 0.5 + 0.5 * std::min(1.0, (knee_rise[hit] - k_knee_rise) / 0.3));
+        }
+    }
+    // Covers and middle blocks (strike_covers.h), once both arms' punches are known: not around a punch of either
+    // hand (k_cover_own_strike_s, k_cover_other_strike_s), nor where an elbow strike or a sweeping block was found.
+    const int own_strike_gap = std::max(1, static_cast<int>(std::lround(k_cover_own_strike_s / dt)));
+    const int other_strike_gap = std::max(1, static_cast<int>(std::lround(k_cover_other_strike_s / dt)));
+    for (int limb = 0; limb < 2; ++limb) {
+        const Side side = limb == 0 ? Side::left : Side::right;
+        const std::array<BodyPart, 3> parts = limb_parts(static_cast<Limb>(limb));
+        const std::array<BodyPart, 3> other_parts = limb_parts(static_cast<Limb>(limb ^ 1));
+        std::vector<double> arm_extension(frames);
+        for (int frame = 0; frame < frames; ++frame) arm_extension[frame] = extension[frame][limb];
+        for (const CoverBlock& cover : cover_blocks_detect(arm_track(limb), head_position, hips_forward, side == Side::left, dt, thresholds)) {
+            const int hit = cover.hit_frame;
+            if (already_found(strikes, StrikeSemantics::punch, parts[2], hit, own_strike_gap) ||
+                already_found(strikes, StrikeSemantics::punch, other_parts[2], hit, other_strike_gap) ||
+                already_found(strikes, StrikeSemantics::elbow, parts[1], hit, 2 * min_gap) ||
+                already_found(strikes, StrikeSemantics::block, parts[1], hit, min_gap)) continue;
+            add(StrikeSemantics::block, parts[1], side, hit, arm_extension, 0.5 + 0.5 * cover.strength);
+            strikes.back().first_frame = cover.first_frame;
+            strikes.back().last_frame = std::min(frames - 1, hit + (hit - cover.first_frame));
         }
     }
     // Both arms thrust out together (a two-handed push, a dance, a wave) within thresholds.both_arms_s: neither is a

@@ -13,12 +13,14 @@ struct Field {
     double StrikeThresholds::*member;
 };
 
-constexpr std::array<Field, 6> k_fields{{{"punch_reach", &StrikeThresholds::punch_reach},
+constexpr std::array<Field, 8> k_fields{{{"punch_reach", &StrikeThresholds::punch_reach},
                                          {"punch_rise", &StrikeThresholds::punch_rise},
                                          {"both_arms_s", &StrikeThresholds::both_arms_s},
                                          {"swing_speed", &StrikeThresholds::swing_speed},
                                          {"swing_guard_height", &StrikeThresholds::swing_guard_height},
-                                         {"uppercut_rise", &StrikeThresholds::uppercut_rise}}};
+                                         {"uppercut_rise", &StrikeThresholds::uppercut_rise},
+                                         {"cover_rise", &StrikeThresholds::cover_rise},
+                                         {"cover_upright", &StrikeThresholds::cover_upright}}};
 
 std::string field_names() {
     std::string names;

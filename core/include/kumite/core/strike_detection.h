@@ -24,7 +24,9 @@
 //   height; the hit frame is the knee's highest point. Arm peaks from 0.6 s before a knee strike to its end are
 //   the hands pulling the opponent's head onto it, not punches;
 // - block: see detect_blocks in strike_detection.cpp (a rising or downward sweep of the forearm that stops in front
-//   of the body, not thrust out at a target);
+//   of the body, not thrust out at a target), and src/strike_covers.h (an upright forearm raised to the head's
+//   height above where that hand usually is, and let down again: a middle block, a boxer's cover), not around a
+//   punch of either hand; the hit frame is where the sweep stops, or where the raised wrist is highest;
 // - reach (any part asked for by name): peaks of the part's distance from the pelvis, relative to its rest
 //   distance, that stand 0.1 above the valleys on both sides.
 // Peaks closer than 0.3 s keep the stronger. A strike spans from the extension valley before the hit to the one

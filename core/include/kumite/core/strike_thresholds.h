@@ -26,6 +26,11 @@ struct StrikeThresholds {
     // An uppercut (a swing ending with the forearm upright) comes up from below: how far the fist rose in the 0.3 s
     // before the hit, at least. A middle block or a back-fist swings an upright forearm across at shoulder height.
     double uppercut_rise = 0.9;
+    // A cover or a middle block (an upright forearm raised before the head or beside it, strike_covers.h): how far the
+    // wrist rises to at least the head's height, and how far that is above where the hand usually is, at least.
+    double cover_rise = 0.12;
+    // ... and the forearm upright there: the sine of its slope, at least (0.7: within ~45 degrees of vertical).
+    double cover_upright = 0.7;
 };
 
 // Reads "name=value,name=value" over the defaults; an unknown name or a value that is not a number is an error that
