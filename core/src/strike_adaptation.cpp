@@ -156,8 +156,15 @@ void StrikeAdapter::retarget(const Eigen::Vector3d& target_world) {
 }
 
 double StrikeAdapter::past_stop(const Eigen::Vector3d& point) const {
+    // Through the target only: within target_radius_m of the approach line. A kick whose last chords turn back
+    // towards the kicker (a roundhouse's sweep) drops its foot to the floor beyond the stop point along them, but a
+    // metre under the head, not through it.
     double past = 0.0;
-    for (int k = 0; k < m_approach_count; ++k) past = std::max(past, (point - m_stop_point).dot(m_approaches[k]));
+    const Eigen::Vector3d displacement = point - m_stop_point;
+    for (int k = 0; k < m_approach_count; ++k) {
+        const double along = displacement.dot(m_approaches[k]);
+        if ((displacement - along * m_approaches[k]).norm() <= m_settings.target_radius_m) past = std::max(past, along);
+    }
     return past;
 }
 

@@ -36,14 +36,7 @@ TEST_CASE("fighter: captured blocks against recorded boxers put the forearm on t
         settings.defence.captured_blocks = true;
         Bout b(content->view(), character, settings);
         for (int frame = 0; frame < int(std::min(40.0, user->duration_s()) * 60.0); ++frame) {
-            const double t = frame / 60.0;
-            if (frame % 120 == 60) { // as scripts/real_opponents.py: punch, kick, sides alternating, every 2 s
-                const int n = frame / 120;
-                b.fighter->order(b.retriever->semantics_id(n % 2 ? "kick" : "punch"), (n / 2) % 2 ? Side::right : Side::left);
-            }
-            UserHands hands;
-            const Eigen::Vector3d head = user->head(t, hands);
-            b.fighter->step(t, &head, &hands);
+            b.step_against_capture(*user, frame);
             for (const FighterEvent& e : b.fighter->events()) {
                 if (e.type != FighterEvent::Type::user_strike_end || !is_block(e.user_strike.move)) continue;
                 ++blocks;

@@ -5,6 +5,7 @@
 #include "support/standing_character.h"
 
 #include "kumite/core/retrieval.h"
+#include "kumite/runtime/capture_user.h"
 #include "kumite/runtime/fighter.h"
 #include "kumite/runtime/simulated_user.h"
 
@@ -51,6 +52,19 @@ struct Bout {
         const UserHands hands = user.hands(t);
         fighter->step(t, &head, &hands);
         return head;
+    }
+    // One frame at 60 Hz against a recorded person (kumite play --tracker capture:), ordered as
+    // scripts/real_opponents.py orders: punch, kick, sides alternating, every 2 s from 1 s. The fighter's events stay
+    // in fighter->events() until the caller clears them.
+    void step_against_capture(CaptureUser& user, int frame) {
+        const double t = frame / 60.0;
+        if (frame % 120 == 60) {
+            const int n = frame / 120;
+            fighter->order(retriever->semantics_id(n % 2 ? "kick" : "punch"), (n / 2) % 2 ? Side::right : Side::left);
+        }
+        UserHands hands;
+        const Eigen::Vector3d head = user.head(t, hands);
+        fighter->step(t, &head, &hands);
     }
     int count(FighterEvent::Type type) const {
         return static_cast<int>(std::count_if(events.begin(), events.end(), [&](const FighterEvent& e) { return e.type == type; }));

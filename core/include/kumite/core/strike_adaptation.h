@@ -22,7 +22,8 @@
 //  6. impact: after the contact the hit point may not go past the target (out of reach: the closest point it got
 //     to at the contact) along any of the strike's approach directions (its path's chords over the last frames) by more than a soft margin (overshoot_softness_m, approached smoothly), so a strike that lands stops at the
 //     target and then recovers along the clip's own retraction, offset-corrected. set_impact(false) lets the
-//     strike follow through instead (the user dodged: a visible miss).
+//     strike follow through instead (the user dodged: a visible miss). How far past it the hit point went
+//     (past_target_m, the events' overshoot) counts within target_radius_m of an approach line: through the target.
 //  7. plausible joints (joint_limits.h): a limb whose extremity is moved keeps bending the way the clip bends it
 //     (its elbow or knee bend carried over to the new root->extremity line instead of re-measured from a fixed
 //     reference, which can flip it); every frame reports the joints that still break the limits.
@@ -70,6 +71,9 @@ struct AdaptationSettings {
     // Impact: how far past the target the hit point may drift after the contact; the excess is squashed smoothly
     // (C1) so that the overshoot stays below this margin.
     double overshoot_softness_m = 0.005;
+    // How far from the approach line through the stop point the target reaches (a head, a trunk): past the stop
+    // point within it is through the target (AdaptedFrame::past_target_m); further aside the hit point has left it.
+    double target_radius_m = 0.3;
     bool keep_clip_bends = true; // step 7; off: the decoder's swivels as they are (for comparison)
     OffsetRamp offset_ramp = OffsetRamp::progress;
     JointLimits limits;
@@ -104,7 +108,8 @@ struct AdaptedFrame {
     std::array<double, 3> pivot_turn_rad{};             // how far the CCD turned each pivot (within its limit)
     bool contact = false;                               // the contact frame
     double past_target_m = 0.0;   // after the contact: how far the effector is past the target (out of reach: the
-                                  // closest point reached at the contact) along the farthest approach direction
+                                  // closest point reached at the contact) along the farthest approach direction,
+                                  // counted within settings.target_radius_m of that direction's line (through it)
     unsigned joint_violations = 0; // joint_limits.h mask
 };
 
