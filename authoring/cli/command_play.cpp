@@ -40,7 +40,7 @@ const CommandSpec& play_spec() {
         "play",
         "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:HEAD[,LEFT,RIGHT]] | replay:FILE | simulate:KIND|FILE] "
         "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] "
-        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--human-speed] [--no-hit-reactions] [--rest-in-reach] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
+        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--max-speedup RATIO] [--human-speed] [--no-hit-reactions] [--rest-in-reach] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
         "Runs the fighter at 60 Hz against the user's head and hands (a DTrack system, a replayed CSV, or a\n"
         "simulated user) and the supervisor's commands, one per line: punch [left|right] [straight|hook|uppercut]\n"
         "[low|middle|high], kick [left|right] [front|roundhouse|side] [low|middle|high], slash [left|right] [low|middle|high],\n"
@@ -78,6 +78,8 @@ const CommandSpec& play_spec() {
          {"plans-per-frame", "N", "at most N fighters plan a strike in one frame, the others on the next frames, oldest order first (default 14; 0: no limit)"},
          {"steer-until", "S", "predicted aim: the strike follows the head until S before its contact (default 0.15 s; 0: never steers)"},
          {"variety", "N", "prefer a clip not used in the last N strikes when one scores within 0.15 of the best (default 6, 0: always the best)"},
+         {"max-speedup", "RATIO", "a punch or kick captured slower than a real one lands (5 and 6 m/s) is played up to RATIO times as fast until\n"
+                                  "its contact (default 1.6; 1: every strike at its captured speed)"},
          {"human-speed", "", "no joint of the fighter moves faster than the library's fastest for its kind of move (wrists and ankles\n"
                              "never over 12 m/s): a move that asks for more is shown lagging (the report's motion.by_move held_back_frames)"},
          {"rest-in-reach", "", "between strikes the fighter rests where its strikes reach (as the paper's); default: just out of reach\n"
@@ -126,6 +128,8 @@ int run_play(int argc, char** argv) {
     if (!contact_speed_share) return usage_error(play_spec(), contact_speed_share.error().message);
     const Result<double> steer_until_s = arguments.number("steer-until", 0.0, 5.0, FighterSettings{}.steer_until_s, "seconds");
     if (!steer_until_s) return usage_error(play_spec(), steer_until_s.error().message);
+    const Result<double> max_speedup = arguments.number("max-speedup", 1.0, 4.0, FighterSettings{}.max_speedup, "times the captured speed");
+    if (!max_speedup) return usage_error(play_spec(), max_speedup.error().message);
     const Result<double> block_speed_limit = arguments.number("block-speed-limit", 0.0, 100.0, 0.0, "times the clip's speed");
     if (!block_speed_limit) return usage_error(play_spec(), block_speed_limit.error().message);
     if (*block_speed_limit > 0.0 && !arguments.has("captured-blocks")) return usage_error(play_spec(), "--block-speed-limit applies to --captured-blocks: add it");
@@ -213,6 +217,7 @@ int run_play(int argc, char** argv) {
     options.contact_extension = *contact_extension;
     options.contact_speed_share = *contact_speed_share;
     options.fighter.steer_until_s = *steer_until_s;
+    options.fighter.max_speedup = *max_speedup;
     options.plans_per_frame = static_cast<int>(*plans_per_frame);
     options.fighter.aim = aim;
     options.fighter.defence.enabled = !arguments.has("no-defence");

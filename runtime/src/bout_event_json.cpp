@@ -61,6 +61,7 @@ nlohmann::json event_object(const Bout& bout, const BoutEvent& bout_event) {
         if (event.aimed_point_at_contact) line["aimed_point_at_contact"] = xyz(*event.aimed_point_at_contact);
         line["retrieval_offset_m"] = event.retrieval_offset_m;
         line["steered_m"] = event.steered_m;
+        line["speedup"] = event.speedup;
         line["target_part"] = target_part_name(event.target_part);
         line["reachable"] = event.reachable;
         break;

@@ -3,17 +3,50 @@
 #include "kumite/core/joint_limits.h"
 
 #include <algorithm>
+#include <cmath>
+#include <string_view>
 
 namespace kumite {
+namespace {
+
+constexpr double k_max_strike_speedup = 1.9; // the time warp's pace at the start, 2 - s, stays over 0.1
+constexpr double k_pace_back_s = 0.1;        // after the contact, the clip's clock back to its own pace over this long
+
+} // namespace
+
+double strike_speedup(const MotionDatabaseView& db, const FighterSettings& settings, int clip, int contact_frame) {
+    if (clip < 0 || contact_frame < 1 || settings.max_speedup <= 1.0) return 1.0;
+    const DbClip& c = db.clips[clip];
+    const std::string_view semantics = db.string(c.semantics);
+    const double real_mps = semantics == "punch" ? settings.punch_speed_mps : semantics == "kick" ? settings.kick_speed_mps : 0.0;
+    const float* before = db.poses[c.first_pose + contact_frame - 1].hit_point;
+    const float* at = db.poses[c.first_pose + contact_frame].hit_point;
+    const double captured_mps = Eigen::Vector3d(at[0] - before[0], at[1] - before[1], at[2] - before[2]).norm() / db.meta.frame_time_s;
+    if (real_mps <= 0.0 || captured_mps <= 1e-6 || captured_mps >= real_mps) return 1.0;
+    return std::min({real_mps / captured_mps, settings.max_speedup, k_max_strike_speedup});
+}
+
+double strike_clip_time(double clock_s, double to_contact_s, double speedup) {
+    if (speedup <= 1.0 || to_contact_s <= 0.0) return clock_s;
+    if (clock_s <= to_contact_s) {
+        const double u = std::max(0.0, clock_s / to_contact_s);
+        return to_contact_s * ((2.0 - speedup) * u + (speedup - 1.0) * u * u);
+    }
+    // After the contact the pace falls from `speedup` to 1 over k_pace_back_s, linearly.
+    const double after = clock_s - to_contact_s;
+    if (after < k_pace_back_s) return to_contact_s + speedup * after - (speedup - 1.0) * after * after / (2.0 * k_pace_back_s);
+    return to_contact_s + 0.5 * (speedup + 1.0) * k_pace_back_s + (after - k_pace_back_s);
+}
 
 Strike::Strike(const MotionDatabaseView& db, const FighterSettings& settings)
-    : m_db(db), m_hit_radius_m(settings.hit_radius_m), m_steer_until_s(settings.steer_until_s) {}
+    : m_db(db), m_settings(settings), m_hit_radius_m(settings.hit_radius_m), m_steer_until_s(settings.steer_until_s) {}
 
 int Strike::segment() const { return m_plan.clip >= 0 ? m_db.clips[m_plan.clip].segment : -1; }
 
 double Strike::try_plan(const RetrievalResult& found, const Eigen::Vector3d& target, const MirFrame& from, CharacterBody& body) {
     if (!found.found) return 1e9;
     m_plan = {found.clip, found.start_frame, found.contact_frame, found.clip_to_world, target};
+    m_speedup = strike_speedup(m_db, m_settings, found.clip, found.contact_frame);
     m_start_frame = from;
     m_impact = true;
     begin(body);
@@ -64,6 +97,7 @@ FighterEvent Strike::event(FighterEvent::Type type, double t_s) const {
     event.target_part = m_purpose.part;
     event.reachable = m_purpose.reachable;
     event.steered_m = (m_plan.target_world - m_planned_target).norm();
+    event.speedup = m_speedup;
     return event;
 }
 
@@ -82,15 +116,16 @@ void Strike::play(double t_s, CharacterBody& body, const TrackedUser& user) {
     m_clock_before_s = m_clock_s;
     m_clock_s += t_s - m_last_play_s;
     m_last_play_s = t_s;
-    double index = m_clock_s / m_db.meta.frame_time_s;
     const double contact = adapter.contact_index();
+    const double to_contact_s = contact * m_db.meta.frame_time_s;
+    double index = strike_clip_time(m_clock_s, to_contact_s, m_speedup) / m_db.meta.frame_time_s;
     // The database's frame time is a float: a frame landing on the contact can come out a few 1e-7 short of it.
     if (!m_contact_done && index >= contact - 1e-4) index = contact;
     index = std::min(index, double(adapter.frame_count() - 1));
     // At the contact: a head still at the latched target takes the impact (the strike stops there); a dodged
     // strike follows through from this frame on.
     const bool at_contact = !m_contact_done && index >= contact;
-    steer((contact - index) * m_db.meta.frame_time_s, body, user);
+    steer(to_contact_s - m_clock_s, body, user);
     if (at_contact) {
         m_impact = user.tracking() && (aimed_point(user) - m_plan.target_world).norm() <= m_hit_radius_m;
         adapter.set_impact(m_impact);

@@ -14,6 +14,17 @@
 
 namespace kumite {
 
+// How much faster than captured a strike's hit point arrives at its contact (FighterSettings::max_speedup): the
+// speed its clip's hit point has at the contact frame against the real strike's of its kind, at most max_speedup
+// (under 2); 1 for other kinds and clips fast enough. The time to the contact stays the clip's (strike_clip_time).
+double strike_speedup(const MotionDatabaseView& db, const FighterSettings& settings, int clip, int contact_frame);
+// Where in the clip (seconds from its start frame) a strike is `clock_s` into it, for a contact `to_contact_s` into
+// the clip played `speedup` times as fast at its contact: up to the contact time runs slower at first and faster at
+// the end (clip time T w(t/T), w(u) = (2 - s) u + (s - 1) u^2: w(1) = 1, w'(0) = 2 - s, w'(1) = s), so the
+// contact comes when it would as captured and the user has as long to see it coming; after it the clip's clock
+// comes back to its own pace over 0.1 s.
+double strike_clip_time(double clock_s, double to_contact_s, double speedup);
+
 class Strike {
 public:
     Strike(const MotionDatabaseView& db, const FighterSettings& settings);
@@ -61,12 +72,15 @@ private:
     FighterEvent event(FighterEvent::Type type, double t_s) const;
 
     const MotionDatabaseView& m_db;
+    FighterSettings m_settings;      // a copy: the speedup's speeds
     double m_hit_radius_m, m_steer_until_s;
+    double m_speedup = 1.0;          // how much faster than captured the hit point arrives (strike_speedup)
     StrikePlan m_plan;
     Purpose m_purpose;
     MirFrame m_start_frame;
     double m_start_s = 0.0;
-    double m_clock_s = 0.0;          // the strike's own time since it began (slower than the bout's when held back)
+    double m_clock_s = 0.0;          // the strike's own time since it began (slower than the bout's when held back);
+                                     // the clip's time is strike_clip_time of it
     double m_clock_before_s = 0.0;   // ... at the frame before
     double m_last_play_s = 0.0;      // when play() last ran
     bool m_contact_done = false;

@@ -49,6 +49,8 @@ struct FighterEvent {
                                                            // (world; none without a head then)
     double retrieval_offset_m = 0.0;         // strike events: the chosen clip's natural hit point to the target
     double steered_m = 0.0;                  // strike events: how far steering moved the target since the start
+    double speedup = 1.0;                    // strike events: how much faster than captured it was played to the
+                                             // contact (FighterSettings::max_speedup)
     TargetPart target_part = TargetPart::head; // strike events: the part aimed at
     bool reachable = true;                   // strike events: the adaptation gets the hit point to the target
     UserStrikeEvent user_strike;             // user_strike (seen, the move chosen) and user_strike_end (outcome; its

@@ -73,6 +73,14 @@ struct FighterSettings {
     // and target distance). 0 recent: always the best.
     int variety_recent = 6; // with ~40 clips per order, 6 keeps twenty same orders on at least six clips
     double variety_margin = 0.15;
+    // Strikes at a real strike's speed (issue 44): a punch or kick whose clip arrives at its contact slower than a
+    // real one meets its target (punch_speed_mps, kick_speed_mps: the speeds real strikes land at; the kata's
+    // punches are captured at 2-4 m/s) is played faster up to the contact, at most `max_speedup` times its captured
+    // speed (then as captured: the impact, the recovery). 1: every strike as captured. Its joints stay human with
+    // human_speed on (the speed limit holds what goes over the library's fastest).
+    double punch_speed_mps = 5.0;
+    double kick_speed_mps = 6.0;
+    double max_speedup = 1.6;
     // Human speed (issue 44): no joint shown faster than the library's fastest for its kind of move (speed_limit.h);
     // a part that asks for more is shown lagging. Off until the defence reads punches early enough to block at that
     // speed (runtime/README.md, "Human speed").
