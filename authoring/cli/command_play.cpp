@@ -79,7 +79,7 @@ const CommandSpec& play_spec() {
          {"steer-until", "S", "predicted aim: the strike follows the head until S before its contact (default 0.15 s; 0: never steers)"},
          {"variety", "N", "prefer a clip not used in the last N strikes when one scores within 0.15 of the best (default 6, 0: always the best)"},
          {"max-speedup", "RATIO", "a punch or kick captured slower than a real one lands (5 and 6 m/s) is played up to RATIO times as fast until\n"
-                                  "its contact (default 1.6; 1: every strike at its captured speed)"},
+                                  "its contact, which comes when it would as captured (default 1.6, at most 1.9; 1: every strike at its captured speed)"},
          {"human-speed", "", "no joint of the fighter moves faster than the library's fastest for its kind of move (wrists and ankles\n"
                              "never over 12 m/s): a move that asks for more is shown lagging (the report's motion.by_move held_back_frames)"},
          {"rest-in-reach", "", "between strikes the fighter rests where its strikes reach (as the paper's); default: just out of reach\n"
@@ -128,7 +128,7 @@ int run_play(int argc, char** argv) {
     if (!contact_speed_share) return usage_error(play_spec(), contact_speed_share.error().message);
     const Result<double> steer_until_s = arguments.number("steer-until", 0.0, 5.0, FighterSettings{}.steer_until_s, "seconds");
     if (!steer_until_s) return usage_error(play_spec(), steer_until_s.error().message);
-    const Result<double> max_speedup = arguments.number("max-speedup", 1.0, 4.0, FighterSettings{}.max_speedup, "times the captured speed");
+    const Result<double> max_speedup = arguments.number("max-speedup", 1.0, 1.9, FighterSettings{}.max_speedup, "times the captured speed");
     if (!max_speedup) return usage_error(play_spec(), max_speedup.error().message);
     const Result<double> block_speed_limit = arguments.number("block-speed-limit", 0.0, 100.0, 0.0, "times the clip's speed");
     if (!block_speed_limit) return usage_error(play_spec(), block_speed_limit.error().message);

@@ -62,6 +62,13 @@ TEST_CASE("cli: --help and usage errors", "[cli]") {
         CHECK(refused.status == 2);
         CHECK_THAT(refused.err, Catch::Contains("--block-speed-limit must be 0 to 100"));
     }
+    // The strikes' speedup is a ratio from 1 (as captured) to 1.9 (the clip's time warp keeps its start moving).
+    for (const char* bad : {"0.5", "abc", "2.5"}) {
+        const auto refused = run_command(kumite_exe() + " play " + golden + " --headless --duration 1 --max-speedup " + bad);
+        CHECK(refused.status == 2);
+        CHECK_THAT(refused.err, Catch::Contains("--max-speedup must be 1 to 1.9"));
+    }
+    CHECK(run_command(kumite_exe() + " play " + golden + " --headless --duration 1 --max-speedup 1").status == 0);
 }
 
 TEST_CASE("cli: inspect --json has the contract's keys", "[cli]") {
