@@ -108,10 +108,11 @@ TEST_CASE("fighter: a step keeps the guard's arms up: elbows bend no faster than
 TEST_CASE("fighter: how long a strike's hit point stays where it stopped, as its own pose shows it", "[runtime][corpus]") {
     const MotionDatabaseContent* content = kumite::test::reference_database();
     if (!content) return;
-    // At their captured speed: sped up (strike_speedup_test.cpp), none of this bout's strikes stays a frame, and the
-    // measure would be checked against zero alone.
+    // At their captured speed and at the head's centre: sped up (strike_speedup_test.cpp) or met at the face, none of
+    // this bout's strikes stays a frame, and the measure would be checked against zero alone.
     FighterSettings settings;
     settings.max_speedup = 1.0;
+    settings.surface_depth_m = 0.0;
     kumite::test::Bout bout(content->view(), "brawler", settings);
     const Eigen::Vector3d head(0.0, 1.65, 1.0);
     // Punches and kicks at a still head; after each contact, the frames the hit joint of the pose shown stays within

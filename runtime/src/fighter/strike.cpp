@@ -105,7 +105,7 @@ void Strike::steer(double to_contact_s, CharacterBody& body, const TrackedUser& 
     // Predicted aim: the target follows the head until steer_until_s before the contact.
     if (m_steer_until_s <= 0.0 || m_purpose.aim != FighterAim::predicted || !user.tracking() || !user.motion().ready()) return;
     if (m_contact_done || to_contact_s <= m_steer_until_s) return;
-    const Eigen::Vector3d target = user.motion().predict(to_contact_s) - Eigen::Vector3d(0.0, m_purpose.drop_m, 0.0);
+    const Eigen::Vector3d target = user.motion().predict(to_contact_s) + m_purpose.aim_offset;
     body.current().adapter.retarget(target);
     m_plan.target_world = target;
 }

@@ -37,7 +37,8 @@ public:
         StrikeOrder order;
         bool varied = false;         // not the best clip, for variety
         TargetPart part = TargetPart::head;
-        double drop_m = 0.0;         // the aimed point under the head
+        Eigen::Vector3d aim_offset = Eigen::Vector3d::Zero(); // the aimed point from the head: under it (the part), and
+                                                              // towards the fighter to its surface (strike_aim.h)
         bool reachable = true;
         FighterAim aim = FighterAim::latched;
         double head_speed_mps = 0.0; // when it began
@@ -68,7 +69,7 @@ public:
 private:
     void begin(CharacterBody& body); // the body's adapter on m_plan, from m_start_frame
     void steer(double to_contact_s, CharacterBody& body, const TrackedUser& user);
-    Eigen::Vector3d aimed_point(const TrackedUser& user) const { return user.head() - Eigen::Vector3d(0.0, m_purpose.drop_m, 0.0); }
+    Eigen::Vector3d aimed_point(const TrackedUser& user) const { return user.head() + m_purpose.aim_offset; }
     FighterEvent event(FighterEvent::Type type, double t_s) const;
 
     const MotionDatabaseView& m_db;

@@ -12,6 +12,13 @@ constexpr double k_target_drops_m[k_target_part_count] = {0.0, 0.10, 0.30, 0.45}
 
 double drop_under_head_m(int part, const Eigen::Vector3d& head) { return k_target_drops_m[part] * std::clamp(head.y() / 1.65, 0.5, 1.4); }
 
+Eigen::Vector3d aim_offset(int part, const Eigen::Vector3d& head, const Eigen::Vector3d& fighter, double surface_depth_m) {
+    Eigen::Vector3d towards = fighter - head;
+    towards.y() = 0.0;
+    const Eigen::Vector3d surface = towards.norm() > 1e-6 ? Eigen::Vector3d(surface_depth_m * towards.normalized()) : Eigen::Vector3d::Zero();
+    return surface - Eigen::Vector3d(0.0, drop_under_head_m(part, head), 0.0);
+}
+
 double strike_reach_m(const CharacterBody& body, const Eigen::Vector3d& head, bool fallback) {
     const RestAnatomy& anatomy = body.anatomy();
     const auto positions = body.current().decoder.model_positions();

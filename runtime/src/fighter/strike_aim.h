@@ -18,6 +18,10 @@ inline constexpr TargetPart k_target_parts[k_target_part_count] = {TargetPart::h
 // How far under the user's head the target part `part` (an index of k_target_parts) is: 0.10, 0.30 and 0.45 m under
 // a 1.65 m head, scaled by the user's size (head height / 1.65 m).
 double drop_under_head_m(int part, const Eigen::Vector3d& head);
+// The point a strike at part `part` meets, from the head: the part's drop under it, and `surface_depth_m` towards
+// `fighter` on the floor plane (a fist or foot lands on the face or the front of the body, not at the head's
+// centre inside it).
+Eigen::Vector3d aim_offset(int part, const Eigen::Vector3d& head, const Eigen::Vector3d& fighter, double surface_depth_m);
 
 // How far from the pelvis (horizontally, metres) the arms of `body`, as shown, reach the user's head: the
 // shoulder's lead plus what 90% of the arm spans at the head's height above the shoulder, plus a lean of 0.1 leg

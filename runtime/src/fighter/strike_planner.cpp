@@ -9,7 +9,7 @@ namespace kumite {
 
 StrikePlanner::StrikePlanner(const MotionDatabaseView& db, const Retriever& retriever, const FighterSettings& settings)
     : m_db(db), m_retriever(retriever), m_wait_for_reach_s(settings.wait_for_reach_s), m_reach_tolerance_m(settings.reach_tolerance_m),
-      m_variety_margin(settings.variety_margin), m_variety_recent(settings.variety_recent), m_reach_fallback(settings.reach_fallback),
+      m_variety_margin(settings.variety_margin), m_variety_recent(settings.variety_recent), m_reach_fallback(settings.reach_fallback), m_surface_depth_m(settings.surface_depth_m),
       m_workspace(retriever.make_workspace()) {}
 
 StrikePlanner::Outcome StrikePlanner::plan(double t_s, FighterAim aim, bool approaching, OrderQueue& orders, CharacterBody& body,
@@ -45,7 +45,7 @@ StrikePlanner::Outcome StrikePlanner::plan(double t_s, FighterAim aim, bool appr
     int part = first;
     bool reachable = false;
     for (; part < last; ++part) {
-        found = retrieve(query, drop_under_head_m(part, user.head()), aim, pending, user, target);
+        found = retrieve(query, aim_offset(part, user.head(), body.heading().origin, m_surface_depth_m), aim, pending, user, target);
         if (!found.found) break;
         if (strike.try_plan(found, target, body.mir(), body) <= m_reach_tolerance_m) {
             reachable = true;
@@ -81,13 +81,13 @@ StrikePlanner::Outcome StrikePlanner::plan(double t_s, FighterAim aim, bool appr
             return Outcome::waiting;
         }
         part = 0;
-        found = retrieve(query, 0.0, aim, pending, user, target);
+        found = retrieve(query, aim_offset(0, user.head(), body.heading().origin, m_surface_depth_m), aim, pending, user, target);
         strike.try_plan(found, target, body.mir(), body);
     }
     if (!found.found) return Outcome::refused;
     Strike::Purpose purpose;
     purpose.part = k_target_parts[part];
-    purpose.drop_m = drop_under_head_m(part, user.head());
+    purpose.aim_offset = aim_offset(part, user.head(), body.heading().origin, m_surface_depth_m);
     purpose.reachable = reachable;
     purpose.aim = aim;
     purpose.head_speed_mps = user.motion().velocity().norm();
@@ -100,17 +100,16 @@ StrikePlanner::Outcome StrikePlanner::plan(double t_s, FighterAim aim, bool appr
     return Outcome::begun;
 }
 
-RetrievalResult StrikePlanner::retrieve(RetrievalQuery& query, double drop_m, FighterAim aim, const PendingOrder& pending,
+RetrievalResult StrikePlanner::retrieve(RetrievalQuery& query, const Eigen::Vector3d& offset, FighterAim aim, const PendingOrder& pending,
                                         const TrackedUser& user, Eigen::Vector3d& target) {
-    const Eigen::Vector3d drop(0.0, drop_m, 0.0);
-    target = pending.head - drop; // latched: where the head was at the order
+    target = pending.head + offset; // latched: where the head was at the order
     query.target_world = target;
     RetrievalResult found = query_with_variety(query);
     if (aim != FighterAim::predicted || !user.motion().ready()) return found;
     // The contact time depends on the strike, and the strike on the target: a few rounds settle both (each moves
     // the target by the head's speed times the change of contact time; they stop within a centimetre).
     for (int round = 0; round < 3 && found.found; ++round) {
-        const Eigen::Vector3d predicted = user.motion().predict(found.time_to_contact_s) - drop;
+        const Eigen::Vector3d predicted = user.motion().predict(found.time_to_contact_s) + offset;
         if ((predicted - target).norm() < 0.01) break;
         target = predicted;
         query.target_world = target;

@@ -32,7 +32,7 @@ public:
 private:
     // The strike for the pending order at the point `drop_m` under the head, where `aim` asks for (as it is, or as it
     // will be at the contact); the target used in `target`.
-    RetrievalResult retrieve(RetrievalQuery& query, double drop_m, FighterAim aim, const PendingOrder& pending, const TrackedUser& user,
+    RetrievalResult retrieve(RetrievalQuery& query, const Eigen::Vector3d& offset, FighterAim aim, const PendingOrder& pending, const TrackedUser& user,
                              Eigen::Vector3d& target);
     // A retrieval that prefers a clip not struck lately; m_varied tells if it did.
     RetrievalResult query_with_variety(RetrievalQuery& query);
@@ -43,6 +43,7 @@ private:
     double m_wait_for_reach_s, m_reach_tolerance_m, m_variety_margin;
     int m_variety_recent;
     bool m_reach_fallback;
+    double m_surface_depth_m;
     bool m_may_plan = true; // the planning budget lets this step plan a strike
     int m_plan_parts = 4;   // ... looking at this many target parts at most
     bool m_varied = false;  // the last retrieval took a varied clip

@@ -56,6 +56,9 @@ struct FighterSettings {
     HeadMotionSettings head_motion;  // the filter behind predicted aim
     bool reach_fallback = true;      // aim lower on the body when the head is out of reach (else strike at the head)
     double reach_tolerance_m = 0.05; // a strike reaches a point when its adaptation gets the hit point this close
+    // A strike meets the user's surface: the point aimed at (the tracked head's centre, or a point under it) is moved
+    // this far towards the fighter on the floor plane. 0: at the centre, inside the head.
+    double surface_depth_m = 0.08;
     DefenceSettings defence;         // blocks and slips against the user's tracked hands (defence.h)
     // With predicted aim, the fighter keeps its eyes on the head during a strike: every frame until this long
     // before the contact it aims again at where the head will be at the contact (the adaptation carries the hit
