@@ -413,17 +413,21 @@ std::vector<StrikeSuggestion> strikes_detect(const Clip& clip, const RestAnatomy
         const Side side = limb == 0 ? Side::left : Side::right;
         const std::array<BodyPart, 3> parts = limb_parts(static_cast<Limb>(limb));
         const std::array<BodyPart, 3> other_parts = limb_parts(static_cast<Limb>(limb ^ 1));
-        std::vector<double> arm_extension(frames);
-        for (int frame = 0; frame < frames; ++frame) arm_extension[frame] = extension[frame][limb];
         for (const CoverBlock& cover : cover_blocks_detect(arm_track(limb), head_position, hips_forward, side == Side::left, dt, thresholds)) {
             const int hit = cover.hit_frame;
             if (already_found(strikes, StrikeSemantics::punch, parts[2], hit, own_strike_gap) ||
                 already_found(strikes, StrikeSemantics::punch, other_parts[2], hit, other_strike_gap) ||
                 already_found(strikes, StrikeSemantics::elbow, parts[1], hit, 2 * min_gap) ||
                 already_found(strikes, StrikeSemantics::block, parts[1], hit, min_gap)) continue;
-            add(StrikeSemantics::block, parts[1], side, hit, arm_extension, 0.5 + 0.5 * cover.strength);
-            strikes.back().first_frame = cover.first_frame;
-            strikes.back().last_frame = std::min(frames - 1, hit + (hit - cover.first_frame));
+            StrikeSuggestion block;
+            block.semantics = StrikeSemantics::block;
+            block.segment = parts[1];
+            block.side = side;
+            block.hit_frame = hit;
+            block.first_frame = cover.first_frame;
+            block.last_frame = std::min(frames - 1, hit + (hit - cover.first_frame));
+            block.confidence = std::clamp(0.5 + 0.5 * cover.strength, 0.0, 1.0);
+            strikes.push_back(block);
         }
     }
     // Both arms thrust out together (a two-handed push, a dance, a wave) within thresholds.both_arms_s: neither is a
