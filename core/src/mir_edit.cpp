@@ -1,5 +1,6 @@
 #include "kumite/core/mir_edit.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -35,6 +36,35 @@ void turn_above_chest(MirFrame& frame, const Eigen::Quaterniond& rotation) {
     turn_arm(frame, rotation, false);
 }
 
+bool is_trunk_part(int part) { return part <= static_cast<int>(BodyPart::head); }
+
+// The part whose frame a limb's extremity is expressed in (RestAnatomy's LimbChain::parent_part): an arm's clavicle
+// (the chest without one), a leg's pelvis.
+int limb_parent_part(const MirFrame& frame, int limb) {
+    if (limb >= 2) return static_cast<int>(BodyPart::pelvis);
+    const int clavicle = static_cast<int>(limb == 0 ? BodyPart::clavicle_l : BodyPart::clavicle_r);
+    return frame.has_part[clavicle] ? clavicle : static_cast<int>(BodyPart::chest);
+}
+
+// A limb part's frame part of the way from `a` to `b`: its bone (the frame's y axis) along the great circle between
+// the two, and the turn about the bone alone. How a limb frame turns about its bone is a convention of the skeleton
+// it was encoded from (the rest pose's secondary axis): between a capture's frame and a character's the two can be
+// half a turn apart about the bone, and a plain slerp between such frames swings the bone itself far off both —
+// a shoulder thrown up and back in the middle of a blend. Swing and twist apart, the bone only swings as far as
+// the two bones are apart.
+Eigen::Quaterniond limb_part_blend(const Eigen::Quaterniond& a, const Eigen::Quaterniond& b, double w) {
+    const Eigen::Vector3d bone_a = a * Eigen::Vector3d::UnitY();
+    Eigen::Quaterniond delta = b * a.conjugate();
+    if (delta.w() < 0.0) delta.coeffs() = -delta.coeffs();
+    const Eigen::Vector3d along = delta.vec().dot(bone_a) * bone_a;
+    Eigen::Quaterniond twist(delta.w(), along.x(), along.y(), along.z());
+    if (twist.norm() < 1e-9) twist = Eigen::Quaterniond::Identity(); // a half turn across the bone: all swing
+    else twist.normalize();
+    const Eigen::Quaterniond swing = delta * twist.conjugate();
+    const Eigen::Quaterniond identity = Eigen::Quaterniond::Identity();
+    return (identity.slerp(w, swing) * identity.slerp(w, twist) * a).normalized();
+}
+
 } // namespace
 
 void mir_frame_move_on_floor(MirFrame& frame, const FloorAlignment& motion, double leg_length) {
@@ -50,9 +80,16 @@ void mir_frame_move_on_floor(MirFrame& frame, const FloorAlignment& motion, doub
 
 void mir_frame_blend(MirFrame& out, const MirFrame& a, const MirFrame& b, double w) {
     out.hip_centre = (1.0 - w) * a.hip_centre + w * b.hip_centre;
+    // The extremities first, in world directions (their parent frames are about to change; `out` may be `a`).
+    std::array<Eigen::Vector3d, k_limb_count> extremity_world;
+    for (int limb = 0; limb < k_limb_count; ++limb) {
+        const int parent = limb_parent_part(b, limb);
+        extremity_world[limb] = (1.0 - w) * (a.part_frames[parent] * a.extremity[limb]) + w * (b.part_frames[parent] * b.extremity[limb]);
+    }
     for (int part = 0; part < k_body_part_count; ++part) {
         out.has_part[part] = b.has_part[part];
-        out.part_frames[part] = a.part_frames[part].slerp(w, b.part_frames[part]);
+        out.part_frames[part] = is_trunk_part(part) ? a.part_frames[part].slerp(w, b.part_frames[part])
+                                                    : limb_part_blend(a.part_frames[part], b.part_frames[part], w);
     }
     for (auto [to, from_a, from_b] : {std::tuple{&out.spine, &a.spine, &b.spine}, std::tuple{&out.neck, &a.neck, &b.neck}}) {
         to->count = from_b->count;
@@ -62,7 +99,7 @@ void mir_frame_blend(MirFrame& out, const MirFrame& a, const MirFrame& b, double
         }
     }
     for (int limb = 0; limb < k_limb_count; ++limb) {
-        out.extremity[limb] = (1.0 - w) * a.extremity[limb] + w * b.extremity[limb];
+        out.extremity[limb] = out.part_frames[limb_parent_part(out, limb)].conjugate() * extremity_world[limb];
         const double turn = std::remainder(b.swivel[limb] - a.swivel[limb], 2.0 * std::numbers::pi); // the short way round
         out.swivel[limb] = a.swivel[limb] + w * turn;
     }

@@ -11,8 +11,11 @@ namespace kumite {
 // A floor motion in metres applied to a frame decoded on a character whose leg length is `leg_length`.
 void mir_frame_move_on_floor(MirFrame& frame, const FloorAlignment& motion, double leg_length);
 
-// out = a blended towards b by weight w in [0, 1]: frames slerped, positions and swivels interpolated; the
-// chains take b's joint fractions (a's chains are sampled there). `out` must not alias a or b.
+// out = a blended towards b by weight w in [0, 1]: trunk frames slerped; limb part frames by swing (the bone along
+// the great circle) and twist (about the bone) apart, as skeletons differ in how their limb frames turn about the
+// bone; limb extremities interpolated as world directions (then expressed in the blended parent frame); positions
+// and swivels interpolated; the chains take b's joint fractions (a's chains are sampled there). `out` must not
+// alias a or b.
 void mir_frame_blend(MirFrame& out, const MirFrame& a, const MirFrame& b, double w);
 
 // Inertialization (Bollo 2016) in MIR space: the offset that takes frame `to` onto frame `from` (hip centre,
