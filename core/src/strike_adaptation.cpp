@@ -370,14 +370,14 @@ AdaptedFrame StrikeAdapter::step(double index, Pose& out) {
     m_clip_swivels = m_frame.swivel;
     result.ramp = offset_ramp(index);
     LimbPins pins = m_pins;
-    if (m_middle) return step_middle(index, out, result, pins);
+    if (m_middle) return at_stop(step_middle(index, out, result, pins));
     pins.extremity_offset_world[m_limb] = result.ramp * m_offset_at_contact;
     decode(out, m_frame, pins);
     const bool stopped = stop_at_target(pins, index);
     if (keep_clip_bends(pins) || stopped) decode(out, m_frame, pins);
     result.wanted = m_decoder.limb_targets()[m_limb];
     result.effector = m_decoder.model_positions()[m_effector_joint];
-    if ((result.effector - result.wanted).norm() > m_settings.reach_tolerance_m) {
+    if ((result.effector - result.wanted).norm() > m_settings.reach_tolerance_m || beyond_limb_reach(result.wanted)) {
         reach_with_trunk(result, pins, out);
         // The trunk moved the limb's root: carry the bends over to the new line again.
         if (keep_clip_bends(pins)) {
@@ -387,36 +387,87 @@ AdaptedFrame StrikeAdapter::step(double index, Pose& out) {
     }
     if (index > contact_index()) result.past_target_m = past_stop(result.effector);
     result.joint_violations = violations();
+    return at_stop(result);
+}
+
+AdaptedFrame StrikeAdapter::at_stop(const AdaptedFrame& result) {
+    // The contact as played: the strike stops where it got to, the target or (out of reach) the closest point to
+    // it. The target may have moved since begin() (retarget): a point out of reach does not move with it, and the
+    // stop point guessed then would pull the fist or foot back across the gap in one frame.
+    if (result.contact) m_stop_point = result.reach == Reach::unreachable ? result.effector : m_plan.target_world;
     return result;
 }
 
+double StrikeAdapter::limb_reach() const {
+    const double length = m_rig.anatomy().limbs[m_limb].length();
+    return std::min(length, std::max(m_settings.limb_reach_share * length, clip_reach(m_limb).norm()));
+}
+
+bool StrikeAdapter::beyond_limb_reach(const Eigen::Vector3d& wanted) const {
+    if (m_middle) return false;
+    const Eigen::Vector3d& root = m_decoder.model_positions()[m_rig.anatomy().limbs[m_limb].root];
+    return (wanted - root).norm() > limb_reach() + m_settings.reach_tolerance_m;
+}
+
+namespace {
+
+// The turn about `centre`, in the plane of `from` and `to` (from the centre), that brings the point `from` just
+// within `reach` of the point `to`: the least of FromTwoVectors(from, to) that does (all of it when even that does
+// not; none when it already is). Distance falls monotonically along the turn: |f|^2 + |t|^2 - 2|f||t| cos(a - phi).
+Eigen::Quaterniond turn_within_reach(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double reach) {
+    const Eigen::Quaterniond full = Eigen::Quaterniond::FromTwoVectors(from, to);
+    const double f = from.norm(), t = to.norm();
+    if ((from - to).norm() <= reach) return Eigen::Quaterniond::Identity();
+    const double angle = std::acos(std::clamp(from.dot(to) / (f * t), -1.0, 1.0));
+    const double c = (f * f + t * t - reach * reach) / (2.0 * f * t);
+    if (c >= 1.0 || angle < 1e-9) return full;
+    const double phi = std::clamp(angle - std::acos(c), 0.0, angle);
+    return Eigen::Quaterniond::Identity().slerp(phi / angle, full);
+}
+
+} // namespace
+
 void StrikeAdapter::reach_with_trunk(AdaptedFrame& result, LimbPins& pins, Pose& out) {
-    // Out of the limb's reach: turn the trunk towards the target, pivot by pivot, within the joint limits.
+    // Out of the limb's reach (or of what it carries, limb_reach): turn the trunk towards the target, pivot by
+    // pivot, each no further than brings the limb's root within that reach, within the joint limits.
     result.reach = Reach::torso;
     if (!m_middle) {
         pins.pinned[m_limb] = true;
         pins.extremity_world[m_limb] = result.wanted;
     }
-    const double middle_reach = m_rig.anatomy().limbs[m_limb].upper_length;
-    m_pivot_turns.fill(Eigen::Quaterniond::Identity());
     const RestAnatomy& anatomy = m_rig.anatomy();
-    double gap = (result.effector - result.wanted).norm();
+    const double middle_reach = anatomy.limbs[m_limb].upper_length;
+    const double tolerance = m_settings.reach_tolerance_m;
+    auto root_position = [&]() -> Eigen::Vector3d { return m_decoder.model_positions()[anatomy.limbs[m_limb].root]; };
+    // Done: the hit point on the target, and (an extremity strike) the root within the limb's carried reach.
+    auto reached = [&]() {
+        return (result.effector - result.wanted).norm() <= tolerance && (m_middle || (root_position() - result.wanted).norm() <= limb_reach() + tolerance);
+    };
+    m_pivot_turns.fill(Eigen::Quaterniond::Identity());
+    auto gap_now = [&]() { return m_middle ? (result.effector - result.wanted).norm() : (root_position() - result.wanted).norm(); };
+    double gap = gap_now();
     for (int sweep = 0; sweep < m_settings.ccd_iterations; ++sweep) {
         bool turned = false;
         for (int p = 0; p < m_pivot_count; ++p) {
             const TrunkPivot pivot = m_pivots[p];
-            // Out of reach the limb points straight at the target from its root, so what the trunk must do is
-            // bring the root closer: turn the pivot so that the root swings towards the target.
             const Eigen::Vector3d centre = pivot_point(pivot);
-            const Eigen::Vector3d root = m_decoder.model_positions()[anatomy.limbs[m_limb].root];
-            // A knee or elbow is always the upper bone's length from the root: the root goes to that distance from
-            // the target, nearer or farther.
-            const Eigen::Vector3d aim = m_middle && (root - result.wanted).norm() > 1e-9
-                                            ? Eigen::Vector3d(result.wanted + middle_reach * (root - result.wanted).normalized())
-                                            : result.wanted;
-            const Eigen::Vector3d from = root - centre, to = aim - centre;
-            if (from.norm() < 1e-6 || to.norm() < 1e-6) continue;
-            Eigen::Quaterniond total = Eigen::Quaterniond::FromTwoVectors(from, to) * m_pivot_turns[p];
+            const Eigen::Vector3d root = root_position();
+            Eigen::Quaterniond step;
+            if (m_middle) {
+                // A knee or elbow is always the upper bone's length from the root: the root goes to that distance
+                // from the target, nearer or farther.
+                const Eigen::Vector3d aim = (root - result.wanted).norm() > 1e-9
+                                                ? Eigen::Vector3d(result.wanted + middle_reach * (root - result.wanted).normalized())
+                                                : result.wanted;
+                const Eigen::Vector3d from = root - centre, to = aim - centre;
+                if (from.norm() < 1e-6 || to.norm() < 1e-6) continue;
+                step = Eigen::Quaterniond::FromTwoVectors(from, to);
+            } else {
+                const Eigen::Vector3d from = root - centre, to = result.wanted - centre;
+                if (from.norm() < 1e-6 || to.norm() < 1e-6) continue;
+                step = turn_within_reach(from, to, limb_reach());
+            }
+            Eigen::Quaterniond total = step * m_pivot_turns[p];
             const double angle = rotation_angle(total), limit = pivot_limit(pivot);
             if (angle > limit) total = Eigen::Quaterniond::Identity().slerp(limit / angle, total);
             Eigen::Quaterniond turn = total * m_pivot_turns[p].conjugate();
@@ -431,15 +482,15 @@ void StrikeAdapter::reach_with_trunk(AdaptedFrame& result, LimbPins& pins, Pose&
             mir_frame_turn(m_frame, pivot, turn, centre, anatomy.leg_length, anatomy.ankle_height);
             result.ccd_decodes += decode_striking(out, pins, result.wanted);
             result.effector = m_decoder.model_positions()[m_effector_joint];
-            if ((result.effector - result.wanted).norm() <= m_settings.reach_tolerance_m) return;
+            if (reached()) return;
         }
         // Every pivot at its limit, or a sweep that gained less than a millimetre (the limits bind): further
         // sweeps would change next to nothing.
-        const double now = (result.effector - result.wanted).norm();
+        const double now = gap_now();
         if (!turned || gap - now < 1e-3) break;
         gap = now;
     }
-    result.reach = Reach::unreachable;
+    if ((result.effector - result.wanted).norm() > tolerance) result.reach = Reach::unreachable;
 }
 
 } // namespace kumite

@@ -68,7 +68,7 @@ TEST_CASE("adaptation: the constraint ramp rises and falls smoothly", "[adaptati
     }
 }
 
-TEST_CASE("adaptation: a reachable target is met at the contact frame by the limb alone, with exact bones and planted feet", "[adaptation]") {
+TEST_CASE("adaptation: a reachable target is met at the contact frame, the arm bent (the trunk leans for what is past limb_reach_share), with exact bones and planted feet", "[adaptation]") {
     for (const char* character : {"kid", "scout", "brawler", "runner", "giant"}) {
         const Scene scene(character);
         StrikeAdapter adapter(scene.rig(), scene.database.view());
@@ -89,7 +89,12 @@ TEST_CASE("adaptation: a reachable target is met at the contact frame by the lim
                 if (adapter.support_feet()[foot]) CHECK((adapter.positions()[scene.anatomy().limbs[2 + foot].extremity] - adapter.support_pins()[foot]).norm() < 1e-6);
             }
             if (frame.contact) {
-                CHECK(frame.reach == Reach::limb);
+                // Within the arm's reach; past the share of it the limb carries (the runner's target, with the clip's
+                // trunk as it is at the contact), the trunk brings the shoulder nearer: the arm stays bent.
+                const LimbChain& arm = scene.anatomy().limbs[int(Limb::arm_l)];
+                const double extension = (adapter.positions()[arm.extremity] - adapter.positions()[arm.root]).norm() / arm.length();
+                CHECK(frame.reach != Reach::unreachable);
+                CHECK((frame.reach == Reach::limb || extension <= AdaptationSettings{}.limb_reach_share + 1e-6));
                 CHECK((frame.effector - target).norm() < 1e-6);
                 CHECK(frame.ramp == 1.0);
             }
@@ -234,4 +239,32 @@ TEST_CASE("adaptation: a target moved during the strike is met at the contact, t
         for (int i = 0; i <= planned.contact_index(); ++i) planned_path.push_back(planned.step(i, pose).effector);
         CHECK(largest_velocity_change(path) <= largest_velocity_change(planned_path) + drift.norm());
     }
+}
+
+TEST_CASE("adaptation: a target out of reach that moves on after the strike began stops the fist where it got to, no jump back", "[adaptation]") {
+    // The stop point out of reach was the closest point found at begin(), moved along with the target by each
+    // retarget: the fist, stopped where it really got to, was pulled across the gap in one frame after the contact
+    // (a giant's punch at a retreating head: 0.35 m, 21 m/s).
+    const Scene scene("giant");
+    StrikeAdapter adapter(scene.rig(), scene.database.view());
+    const Eigen::Vector3d shoulder = scene.rig().positions()[scene.anatomy().limbs[int(Limb::arm_l)].root];
+    const double arm = scene.anatomy().limbs[int(Limb::arm_l)].length();
+    scene.begin(adapter, "punch", Side::left, shoulder + Eigen::Vector3d(0.0, 0.0, arm + 0.4));
+    Pose pose;
+    Eigen::Vector3d previous = Eigen::Vector3d::Zero(), at_contact = Eigen::Vector3d::Zero();
+    double step_after_m = -1.0;
+    for (int i = 0; i < adapter.frame_count(); ++i) {
+        if (i == adapter.contact_index() - 2) adapter.retarget(shoulder + Eigen::Vector3d(0.0, 0.0, arm + 1.0)); // it backs away
+        const AdaptedFrame frame = adapter.step(i, pose);
+        if (frame.contact) {
+            CHECK(frame.reach == Reach::unreachable);
+            at_contact = frame.effector;
+        }
+        if (i == adapter.contact_index() + 1) step_after_m = (frame.effector - previous).norm();
+        previous = frame.effector;
+    }
+    INFO("the step after the contact " << step_after_m << " m");
+    CHECK((adapter.stop_point() - at_contact).norm() < 1e-9); // where it got to
+    CHECK(step_after_m >= 0.0);
+    CHECK(step_after_m < 0.08); // the recovery at the clip's own pace, not 0.6 m back to where the target went
 }

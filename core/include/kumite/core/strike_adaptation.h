@@ -11,11 +11,13 @@
 //     the clip's own progress towards its hit (OffsetRamp::progress), so the strike arrives on the target as the
 //     clip arrives at its hit; after the contact it falls back to 0 over `recovery_frames` (constraint_ramp);
 //  3. the limb alone: the decoder's analytic two-bone solve of that limb, swivel kept;
-//  4. when the limb cannot reach, Cyclic Coordinate Descent over trunk pivots (clavicle, chest, spine base for
-//     arm strikes; the pelvis about the support hip for leg strikes), each turned so that the limb's root swings
-//     towards the target (the limb then points straight at it) within its joint limit (settings),
-//     until 1 mm or the iteration budget; the limb is then solved again onto the closest point it reaches. Every
-//     frame starts from the clip's own frame, so the result is a smooth function of the target: no jitter.
+//  4. when the limb cannot reach — or only at full stretch: beyond limb_reach_share of its length — Cyclic
+//     Coordinate Descent over trunk pivots (clavicle, chest, spine base for arm strikes; the pelvis about the
+//     support hip for leg strikes), each turned just so far that the limb's root comes within that reach of the
+//     target (a knee or elbow strike: onto the point the upper bone's length from it), within its joint limit
+//     (settings), until 1 mm or the iteration budget; the limb is then solved again onto the closest point it
+//     reaches. Every frame starts from the clip's own frame and turns no further than needed, so the result is a
+//     smooth function of the target: no jitter, no jump where the target leaves the limb's reach.
 //  5. the support feet — planted both in the current motion and in the clip's start — stay pinned where they
 //     were when the strike began, for the whole strike; a kick's kicking foot is free. When the clip's hips rise
 //     beyond what a pinned leg reaches, the hips are lowered towards the foot instead of lifting it.
@@ -61,6 +63,12 @@ struct AdaptationSettings {
     int recovery_frames = 8;         // d(t) back to 0 after the contact
     double reach_tolerance_m = 0.001;
     int ccd_iterations = 4;          // sweeps over the pivots (measured: 8 gains nothing, costs twice)
+    // The limb carries the hit point out to this share of its length (or as far as the clip's own limb reaches
+    // that frame, when it is straighter); further out the trunk brings the limb's root nearer. A person's punch
+    // meets its target with the elbow still bending out, not snapped straight: at full stretch the last
+    // centimetres of reach take the elbow's fastest turn and the fist arrives slow (issue 44). 1: the limb alone
+    // as far as it reaches.
+    double limb_reach_share = 0.95;
     // Joint limits of the CCD, as the largest turn away from the clip's own pose (radians): 25 deg for the spine
     // base, 15 deg for the chest, 15 deg for a clavicle, 30 deg for the pelvis (leaning back from a kick); the chest
     // never turns further than limits.trunk_turn_rad from the pelvis.
@@ -186,6 +194,11 @@ private:
     unsigned violations() const;
     // Step 4: the trunk's CCD when the limb alone falls short of result.wanted.
     void reach_with_trunk(AdaptedFrame& result, LimbPins& pins, Pose& out);
+    AdaptedFrame at_stop(const AdaptedFrame& result); // the contact frame sets where the strike stops
+    // How far from its root the striking limb carries the hit point this frame (limb_reach_share).
+    double limb_reach() const;
+    // Whether the striking limb's root is further from `wanted` than the limb carries (only for an extremity strike).
+    bool beyond_limb_reach(const Eigen::Vector3d& wanted) const;
     Eigen::Vector3d pivot_point(TrunkPivot pivot) const;
     // The part of a chest or spine-base turn that keeps the trunk within limits.trunk_turn_rad.
     Eigen::Quaterniond within_trunk_limit(const Eigen::Quaterniond& turn) const;
