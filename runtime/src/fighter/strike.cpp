@@ -144,6 +144,8 @@ void Strike::held_back(double share) {
     if (share >= 1.0) return;
     m_clock_s = m_clock_before_s + share * (m_clock_s - m_clock_before_s);
     m_over = false;
+    // The pose shown stopped short of the contact: it is yet to come (measured where it is shown, not here).
+    if (m_contact_now) m_contact_now = m_contact_done = false;
 }
 
 void Strike::measure(double t_s, CharacterBody& body, const TrackedUser& user, EventLog& log) {
