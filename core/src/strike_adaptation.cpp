@@ -87,15 +87,18 @@ void StrikeAdapter::begin(const StrikePlan& plan, const MirFrame& current, const
             const float* p = m_db.poses[clip.first_pose + std::clamp(plan.start_frame + index, 0, int(clip.frame_count) - 1)].hit_point;
             return Eigen::Vector3d(p[0], p[1], p[2]);
         };
+        // The share of the hit point's path from the start to the contact covered by each frame: 0 at the start, 1
+        // at the contact, rising as fast as the clip's own hit point moves. (Its distance to the contact point, as a
+        // share of the farthest it was, is not 0 at a start after which the fist first draws back: the ramp jumped
+        // there, the offset added in one frame.) A hit point that never moves: the share of the time.
         const int contact = std::clamp(contact_index(), 0, int(m_progress.size()) - 1);
-        const Eigen::Vector3d at_hit = hit_point(contact);
-        double farthest = 0.0;
-        for (int i = 0; i <= contact; ++i) farthest = std::max(farthest, (hit_point(i) - at_hit).norm());
-        double progress = 0.0;
-        for (int i = 0; i <= contact; ++i) {
-            progress = std::max(progress, farthest > 1e-9 ? 1.0 - (hit_point(i) - at_hit).norm() / farthest : 1.0);
-            m_progress[i] = progress;
+        double path = 0.0;
+        m_progress[0] = 0.0;
+        for (int i = 1; i <= contact; ++i) {
+            path += (hit_point(i) - hit_point(i - 1)).norm();
+            m_progress[i] = path;
         }
+        for (int i = 1; i <= contact; ++i) m_progress[i] = path > 1e-9 ? m_progress[i] / path : double(i) / contact;
     }
     const std::uint32_t start_flags = m_db.poses[clip.first_pose + plan.start_frame].flags;
     for (int foot = 0; foot < 2; ++foot) {

@@ -268,3 +268,44 @@ TEST_CASE("adaptation: a target out of reach that moves on after the strike bega
     CHECK(step_after_m >= 0.0);
     CHECK(step_after_m < 0.08); // the recovery at the clip's own pace, not 0.6 m back to where the target went
 }
+
+TEST_CASE("adaptation: the offset ramp starts at 0 and rises with the clip's own hit point, from any start frame", "[adaptation]") {
+    // The ramp followed the hit point's distance to its contact point as a share of the farthest it was: from a
+    // start after which the fist first draws back, that share was already large at the start, and the whole
+    // offset came in one frame (a kid's punch: 0.75 of 0.3 m between the first two half frames, 22 m/s). Now the
+    // share of the hit point's path covered: every start frame of the golden punch, the ramp rises from 0 no faster
+    // than the hit point itself moves along its path.
+    const Scene scene("scout");
+    StrikeAdapter adapter(scene.rig(), scene.database.view());
+    const Eigen::Vector3d shoulder = scene.rig().positions()[scene.anatomy().limbs[int(Limb::arm_l)].root];
+    const StrikePlan retrieved = scene.begin(adapter, "punch", Side::left, shoulder + Eigen::Vector3d(0.1, 0.0, 0.5));
+    const MotionDatabaseView db = scene.database.view();
+    const DbClip& clip = db.clips[retrieved.clip];
+    auto hit_point = [&](int frame) {
+        const float* p = db.poses[clip.first_pose + frame].hit_point;
+        return Eigen::Vector3d(p[0], p[1], p[2]);
+    };
+    const int contact_frame = retrieved.start_frame + adapter.contact_index();
+    int starts = 0;
+    for (int start = 0; start + 3 <= contact_frame; ++start) {
+        StrikePlan plan = retrieved;
+        plan.start_frame = start;
+        adapter.begin(plan, scene.character->mir, {true, true}, scene.character->ankles);
+        const int contact = adapter.contact_index();
+        double path = 0.0;
+        for (int i = 1; i <= contact; ++i) path += (hit_point(start + i) - hit_point(start + i - 1)).norm();
+        INFO("start " << start << ", contact " << contact << ", path " << path << " m");
+        CHECK(adapter.offset_ramp(0.0) == 0.0);
+        CHECK(adapter.offset_ramp(double(contact)) == Approx(1.0));
+        double previous = 0.0;
+        for (int i = 1; i <= contact; ++i) {
+            const double ramp = adapter.offset_ramp(double(i));
+            const double moved = (hit_point(start + i) - hit_point(start + i - 1)).norm();
+            CHECK(ramp >= previous - 1e-12);
+            CHECK(ramp - previous <= 1.5 * moved / path + 1e-9); // smoothstep's steepest slope, times the share moved
+            previous = ramp;
+        }
+        ++starts;
+    }
+    CHECK(starts >= 5);
+}

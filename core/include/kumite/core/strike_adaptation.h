@@ -49,10 +49,11 @@ enum class BlendMode {
 
 // How d(t) grows from the strike's start to the contact.
 enum class OffsetRamp {
-    // smoothstep of the clip's progress towards its hit: the hit point's distance to where it is at the hit, as a
-    // fraction of the farthest it was since the start, never decreasing. A target nearer than the clip's hit then
-    // gets a shorter strike; with time, the clip reaches its full extension while the ramp still lags, and the
-    // offset pulls the fist back onto the target at the end: a loop that arrives moving towards the body.
+    // smoothstep of the clip's progress towards its hit: the share of the hit point's path from the start to the
+    // contact it has covered, so the offset moves the fist in step with the clip's own motion (no faster than it,
+    // scaled by offset over path). A target nearer than the clip's hit then gets a shorter strike; with time, the
+    // clip reaches its full extension while the ramp still lags, and the offset pulls the fist back onto the target
+    // at the end: a loop that arrives moving towards the body.
     progress,
     time, // the paper's: a smoothstep in time from the start to the contact (constraint_ramp)
 };
@@ -146,6 +147,8 @@ public:
     // or out of reach the closest point it gets to at the contact. Found at begin().
     const Eigen::Vector3d& approach_direction() const { return m_approach; }
     const Eigen::Vector3d& stop_point() const { return m_stop_point; }
+    // Step 2's ramp at frame `index` (0 = the start frame): how much of d(tc) the hit point is moved by.
+    double offset_ramp(double index) const;
     // Where the hit joint is at the contact frame in the clip as decoded on this character, before any offset:
     // the strike's own landing point (the retrieval's contact point predicts it by scaling the actor's).
     Eigen::Vector3d clip_contact_point() const { return m_plan.target_world - m_offset_at_contact; }
@@ -173,8 +176,6 @@ private:
     // Step 6 on the decoded frame: the offset that keeps the hit point from passing the target. Step 7: the
     // swivels that keep the clip's bends for the limbs whose extremity is moved. Each returns whether it changed
     // anything (then the frame is decoded again).
-    // Step 2's ramp at frame `index` (0 = the start frame).
-    double offset_ramp(double index) const;
     bool stop_at_target(LimbPins& pins, double index) const;
     // Step 6's move of a hit point at `point` that keeps it from passing the stop point (zero when it does not).
     Eigen::Vector3d impact_correction(const Eigen::Vector3d& point, double index) const;
