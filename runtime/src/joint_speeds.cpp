@@ -78,7 +78,11 @@ JointSpeeds speed_bar(const std::array<JointSpeeds, k_move_kind_count>& library,
     for (const MoveKind strike : {MoveKind::punch, MoveKind::kick, MoveKind::knee, MoveKind::elbow}) strikes.keep_fastest(library[int(strike)]);
     JointSpeeds bar;
     switch (kind) {
-    case MoveKind::hold: bar = library[int(MoveKind::guard)]; break;
+    case MoveKind::guard:
+    case MoveKind::hold: // the guard as the fighter keeps it: turning to face the user and shuffling, as steps do
+        bar = library[int(MoveKind::guard)];
+        bar.keep_fastest(library[int(MoveKind::step)]);
+        break;
     case MoveKind::recover: bar = strikes; break;
     default: bar = library[int(kind)]; break;
     }
