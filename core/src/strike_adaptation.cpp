@@ -36,6 +36,8 @@ double constraint_ramp(double t, double t0, double tc, double recovery) {
 StrikeAdapter::StrikeAdapter(const CharacterRig& rig, const MotionDatabaseView& database, AdaptationSettings settings)
     : m_rig(rig), m_db(database), m_settings(settings), m_decoder(rig.skeleton(), rig.anatomy(), {}) {
     m_pivot_turns.fill(Eigen::Quaterniond::Identity());
+    m_contact_lean.fill(Eigen::Quaterniond::Identity());
+    m_lean_now.fill(Eigen::Quaterniond::Identity());
     std::size_t longest = 1;
     for (const DbClip& clip : database.clips) longest = std::max<std::size_t>(longest, clip.frame_count);
     m_progress.assign(longest, 0.0);
@@ -125,16 +127,8 @@ void StrikeAdapter::begin(const StrikePlan& plan, const MirFrame& current, const
     } else {
         m_pivots[m_pivot_count++] = TrunkPivot::pelvis;
     }
-    // d(tc): where the hit point would be at the contact frame, against the target.
-    frame_mir(contact_index(), m_frame);
-    LimbPins pins = m_pins;
-    decode(m_scratch_pose, m_frame, pins);
-    m_offset_at_contact = plan.target_world - (m_middle ? m_decoder.model_positions()[m_effector_joint] : m_decoder.limb_targets()[m_limb]);
-    // Where the strike stops: the target, or out of reach the closest point the effector gets to at the contact.
-    m_stop_point = plan.target_world;
     m_impact = true;
-    const AdaptedFrame at_contact = step(contact_index(), m_scratch_pose);
-    if (at_contact.reach == Reach::unreachable) m_stop_point = at_contact.effector;
+    const AdaptedFrame at_contact = plan_contact();
     // The approach: the ways the effector itself travels into the stop point over the last 1 to 4 frames before
     // the contact (chords of its path that move at least a centimetre; when it arrives at rest, the outward
     // direction alone). A sweeping kick or a hook turns in its last frames: stopped along its final direction
@@ -151,11 +145,30 @@ void StrikeAdapter::begin(const StrikePlan& plan, const MirFrame& current, const
     m_approach = m_approaches[0];
 }
 
+AdaptedFrame StrikeAdapter::plan_contact() {
+    // d(tc): where the hit point would be at the contact frame, against the target; and the trunk's lean there
+    // (the CCD's, when the limb alone falls short), with d(tc) then measured from the leaned hit point. Where the
+    // strike stops: the target, or out of reach the closest point the effector gets to at the contact.
+    const bool impact = m_impact;
+    m_impact = true;
+    m_leans = false;
+    m_contact_lean.fill(Eigen::Quaterniond::Identity());
+    measure_contact_offset();
+    AdaptedFrame at_contact = step(contact_index(), m_scratch_pose);
+    if (at_contact.reach != Reach::limb && !m_middle) { // a knee or elbow: its CCD turns whole, no lean ahead
+        m_contact_lean = m_pivot_turns;
+        m_leans = true;
+        measure_contact_offset();
+        at_contact = step(contact_index(), m_scratch_pose);
+    }
+    m_stop_point = at_contact.reach == Reach::unreachable ? at_contact.effector : m_plan.target_world;
+    m_impact = impact;
+    return at_contact;
+}
+
 void StrikeAdapter::retarget(const Eigen::Vector3d& target_world) {
-    const Eigen::Vector3d move = target_world - m_plan.target_world;
     m_plan.target_world = target_world;
-    m_offset_at_contact += move;
-    m_stop_point += move;
+    plan_contact();
 }
 
 double StrikeAdapter::past_stop(const Eigen::Vector3d& point) const {
@@ -241,6 +254,7 @@ AdaptedFrame StrikeAdapter::step_middle(double index, Pose& out, AdaptedFrame re
     // target after the contact.
     const int middle_joint = m_effector_joint;
     result.ccd_decodes = decode(out, m_frame, pins);
+    result.ccd_decodes += lean(result.ramp, out, pins);
     Eigen::Vector3d wanted = m_decoder.model_positions()[middle_joint] + result.ramp * m_offset_at_contact;
     wanted += impact_correction(wanted, index);
     result.wanted = wanted;
@@ -376,6 +390,7 @@ AdaptedFrame StrikeAdapter::step(double index, Pose& out) {
     if (m_middle) return at_stop(step_middle(index, out, result, pins));
     pins.extremity_offset_world[m_limb] = result.ramp * m_offset_at_contact;
     decode(out, m_frame, pins);
+    lean(result.ramp, out, pins);
     const bool stopped = stop_at_target(pins, index);
     if (keep_clip_bends(pins) || stopped) decode(out, m_frame, pins);
     result.wanted = m_decoder.limb_targets()[m_limb];
@@ -399,6 +414,27 @@ AdaptedFrame StrikeAdapter::at_stop(const AdaptedFrame& result) {
     // stop point guessed then would pull the fist or foot back across the gap in one frame.
     if (result.contact) m_stop_point = result.reach == Reach::unreachable ? result.effector : m_plan.target_world;
     return result;
+}
+
+void StrikeAdapter::measure_contact_offset() {
+    frame_mir(contact_index(), m_frame);
+    LimbPins pins = m_pins;
+    decode(m_scratch_pose, m_frame, pins);
+    lean(1.0, m_scratch_pose, pins);
+    m_offset_at_contact = m_plan.target_world - (m_middle ? m_decoder.model_positions()[m_effector_joint] : m_decoder.limb_targets()[m_limb]);
+}
+
+int StrikeAdapter::lean(double share, Pose& out, LimbPins& pins) {
+    m_lean_now.fill(Eigen::Quaterniond::Identity());
+    if (!m_leans || share <= 0.0) return 0;
+    const RestAnatomy& anatomy = m_rig.anatomy();
+    for (int p = 0; p < m_pivot_count; ++p) { // about the pivots as decoded (the pelvis's: the support hip)
+        m_lean_now[p] = Eigen::Quaterniond::Identity().slerp(std::min(share, 1.0), m_contact_lean[p]);
+        // The clip's own trunk turns on (a hook's follow-through): the lean keeps it within the trunk's limit.
+        if (m_pivots[p] == TrunkPivot::chest || m_pivots[p] == TrunkPivot::spine_base) m_lean_now[p] = within_trunk_limit(m_lean_now[p]);
+        mir_frame_turn(m_frame, m_pivots[p], m_lean_now[p], pivot_point(m_pivots[p]), anatomy.leg_length, anatomy.ankle_height);
+    }
+    return decode(out, m_frame, pins);
 }
 
 double StrikeAdapter::limb_reach() const {
@@ -446,7 +482,7 @@ void StrikeAdapter::reach_with_trunk(AdaptedFrame& result, LimbPins& pins, Pose&
     auto reached = [&]() {
         return (result.effector - result.wanted).norm() <= tolerance && (m_middle || (root_position() - result.wanted).norm() <= limb_reach() + tolerance);
     };
-    m_pivot_turns.fill(Eigen::Quaterniond::Identity());
+    m_pivot_turns = m_lean_now; // from the lean already made: the limits hold for the whole turn
     auto gap_now = [&]() { return m_middle ? (result.effector - result.wanted).norm() : (root_position() - result.wanted).norm(); };
     double gap = gap_now();
     for (int sweep = 0; sweep < m_settings.ccd_iterations; ++sweep) {

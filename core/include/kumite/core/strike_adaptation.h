@@ -135,9 +135,9 @@ public:
     bool arm_strike() const { return m_arm; }
     bool middle_strike() const { return m_middle; } // a knee or elbow strike (segment_strikes_with_middle)
     // Moves the target during the strike (a fighter that keeps its eyes on a moving head until shortly before the
-    // contact): d(tc) moves with it, so the offset ramp carries the hit point to the new target by the contact; the
-    // stop point moves along (the target, or out of reach the closest point, shifted the same). Cheap: no decode,
-    // no allocation. The move shows in the next step() by ramp(t) times the target's move.
+    // contact): d(tc), the trunk's lean at the contact and the stop point are found again for it (a few decodes at
+    // the contact frame, no allocation), so the offset ramp carries the hit point to the new target by the contact.
+    // The move shows in the next step() by ramp(t) times the target's move.
     void retarget(const Eigen::Vector3d& target_world);
     // Step 6 on (the default at begin()) or off; the fighter turns it off when the user is no longer at the target.
     void set_impact(bool impact) { m_impact = impact; }
@@ -196,6 +196,10 @@ private:
     // Step 4: the trunk's CCD when the limb alone falls short of result.wanted.
     void reach_with_trunk(AdaptedFrame& result, LimbPins& pins, Pose& out);
     AdaptedFrame at_stop(const AdaptedFrame& result); // the contact frame sets where the strike stops
+    // Leans the trunk by `share` of the contact's lean (decoded again when it does); returns the decodes made.
+    int lean(double share, Pose& out, LimbPins& pins);
+    void measure_contact_offset(); // d(tc) from the hit point at the contact frame, leaned
+    AdaptedFrame plan_contact();   // d(tc), the lean and the stop point for the current target; the contact frame
     // How far from its root the striking limb carries the hit point this frame (limb_reach_share).
     double limb_reach() const;
     // Whether the striking limb's root is further from `wanted` than the limb carries (only for an extremity strike).
@@ -236,6 +240,12 @@ private:
     std::array<TrunkPivot, 3> m_pivots{};
     int m_pivot_count = 0;
     std::array<Eigen::Quaterniond, 3> m_pivot_turns;
+    // The trunk's lean at the contact (the CCD's turns there, found at begin()), and the share of it this frame
+    // leans by (the offset ramp's): the trunk leans into the strike as the hit point travels, instead of all at
+    // once in the frame the target leaves the limb's reach.
+    std::array<Eigen::Quaterniond, 3> m_contact_lean;
+    std::array<Eigen::Quaterniond, 3> m_lean_now;
+    bool m_leans = false;
 };
 
 } // namespace kumite
