@@ -102,7 +102,7 @@ void Defence::end_strike(double t_s, Hand& hand, UserStrikeOutcome outcome) {
 }
 
 bool Defence::block_plan(const Hand& hand, const DefenderBody& body, double time_to_impact, const std::array<bool, 2>& arms,
-                         Eigen::Vector3d& wrist_target, int& arm, bool nearer) const {
+                         Eigen::Vector3d& wrist_target, int& arm, double& meeting_s, bool nearer) const {
     const double speed = hand.velocity.norm();
     // The fighter's arm on the side the hand comes from first (+X of its heading frame is its left), then the other.
     const int near_arm = body.heading.to_heading(hand.position).x() >= 0.0 ? 0 : 1;
@@ -117,6 +117,7 @@ bool Defence::block_plan(const Hand& hand, const DefenderBody& body, double time
             if (intercept_s > 0.02 && within_arm && travel / intercept_s <= m_settings.max_block_speed_mps) {
                 wrist_target = intercept;
                 arm = candidate;
+                meeting_s = intercept_s;
                 return true;
             }
         }
@@ -129,12 +130,15 @@ void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, doubl
     int arm = 0;
     m_block_before_m = m_settings.block_before_m;
     m_time_to_impact_s = time_to_impact;
-    if (block_plan(hand, body, time_to_impact, allowed.block_arms, wrist_target, arm)) {
+    double meeting_s = 0.0;
+    if (block_plan(hand, body, time_to_impact, allowed.block_arms, wrist_target, arm, meeting_s)) {
         m_move = DefenceMove::synthesized;
         m_arm = arm;
         m_wrist_target = wrist_target;
-        m_intercept_s = std::max(0.02, time_to_impact - m_settings.block_before_m / hand.velocity.norm());
-        m_ramp_s = std::max(0.03, 0.6 * m_intercept_s); // in place a little before the hand
+        m_intercept_s = std::max(0.02, meeting_s); // at block_before_m, or nearer when that left too little time
+        m_block_travel_m = (wrist_target - body.wrist[arm]).norm();
+        // In place a little before the hand, at a person's speed: up to all the time there is.
+        m_ramp_s = std::max({0.03, 0.6 * m_intercept_s, std::min(shortest_ramp_s(m_block_travel_m), 0.95 * m_intercept_s)});
         m_block_started = true;
     } else if (allowed.slip) {
         // Off the line: from the course's closest point to the head, sideways; straight at the head, to the side
@@ -203,6 +207,11 @@ void Defence::note_arm_speed(double speed_mps) {
     strike.arm_speed_mps = std::max(strike.arm_speed_mps, speed_mps);
 }
 
+double Defence::shortest_ramp_s(double travel_m) const {
+    // A smoothstep over T covers `travel_m` at 1.5 travel / T at its fastest.
+    return m_settings.max_block_wrist_mps > 0.0 ? 1.5 * travel_m / m_settings.max_block_wrist_mps : 0.0;
+}
+
 double Defence::ramp_weight(double t_s) const { return m_ramp_from + (1.0 - m_ramp_from) * smoothstep((t_s - m_ramp_start_s) / m_ramp_s); }
 
 void Defence::update(double t_s, const UserHands& hands, const DefenderBody& body, const Allowed& allowed) {
@@ -260,17 +269,19 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
                 same_arm[m_arm] = true;
                 // A captured block keeps its meeting point's distance: nearer, it would follow a fist that got past
                 // it into the chest (the forearm inside the torso).
-                if (arrival > 0.0 && block_plan(hand, body, arrival, same_arm, wrist_target, arm, m_move == DefenceMove::synthesized))
+                double meeting_s = 0.0;
+                if (arrival > 0.0 && block_plan(hand, body, arrival, same_arm, wrist_target, arm, meeting_s, m_move == DefenceMove::synthesized))
                     m_wrist_target = wrist_target;
                 // The first estimate of its speed mixes in the draw back too: a fist faster than first seen reaches
                 // the meeting point sooner, and the forearm, shown from the next frame on, has to be there a frame
                 // before it. The ramp starts again from where it is, to end then.
                 const double to_meeting_s = (m_wrist_target - now).dot(hand.velocity) / (speed * speed) - dt;
                 const double ramp_end_s = m_ramp_start_s + m_ramp_s;
+                // Never faster than a person's wrist: what is left of the way at its fastest (it arrives late).
                 if (m_weight < 1.0 && t_s + to_meeting_s < ramp_end_s) {
                     m_ramp_from = m_weight;
                     m_ramp_start_s = t_s - dt; // this frame's weight is already a step in
-                    m_ramp_s = std::max(dt, to_meeting_s + dt);
+                    m_ramp_s = std::max({dt, to_meeting_s + dt, shortest_ramp_s((1.0 - m_weight) * m_block_travel_m)});
                     m_weight = ramp_weight(t_s);
                 }
             }

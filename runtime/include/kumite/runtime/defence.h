@@ -40,6 +40,11 @@ struct DefenceSettings {
     double block_contact_m = 0.05;    // a hand path this close to the blocking forearm is blocked
     double block_before_m = 0.3;      // where the forearm meets the path: this far before the target
     double max_block_speed_mps = 8.0; // faster wrist moves are not plausible: slip instead
+    // A synthesized block's ramp is never so short that its wrist would move faster than this at its fastest (the
+    // smoothstep's: 1.5 times its mean), on top of what the body does (issue 44: no wrist over 12 m/s; the ramp
+    // of 0.6 of the time left, started again shorter when the fist turned out faster, moved it at up to 24 m/s).
+    // It takes what is left before the fist gets there instead; what cannot arrive in time arrives late.
+    double max_block_wrist_mps = 12.0;
     double slip_m = 0.3;              // how far the head leans off the line
     double max_hand_speed_mps = 15.0; // a hand that moves faster between samples jumped (a glitch): a new track
     double contact_speed_mps = 2.0;   // a hand meeting the head or chest at least this fast is a strike that arrived
@@ -159,11 +164,13 @@ private:
     void start_move(double t_s, Hand& hand, const DefenderBody& body, double time_to_impact, const Allowed& allowed);
     // Where the blocking wrist should go to meet the hand's course in time, and with which arm (the one on the side
     // it comes from first, else the other, among `arms`); false when none can get there at a plausible speed. The
-    // meeting is block_before_m short of the target, or (`nearer`) half that when the first is out of reach.
+    // meeting is block_before_m short of the target, or (`nearer`) half that when the first is out of reach or
+    // too soon; `meeting_s`: how long until the fist gets there.
     bool block_plan(const Hand& hand, const DefenderBody& body, double time_to_impact, const std::array<bool, 2>& arms,
-                    Eigen::Vector3d& wrist_target, int& arm, bool nearer = true) const;
+                    Eigen::Vector3d& wrist_target, int& arm, double& meeting_s, bool nearer = true) const;
     void end_strike(double t_s, Hand& hand, UserStrikeOutcome outcome);
     double ramp_weight(double t_s) const; // the move's weight at t_s while it ramps in
+    double shortest_ramp_s(double travel_m) const; // a ramp over `travel_m` at max_block_wrist_mps at its fastest
 
     DefenceSettings m_settings;
     std::array<Hand, 2> m_hands;
@@ -178,6 +185,7 @@ private:
     bool m_block_started = false;
     double m_block_before_m = 0.3;   // the move's meeting point before the target
     double m_time_to_impact_s = 0.0; // at the move's start
+    double m_block_travel_m = 0.0;   // how far the blocking wrist goes, from the guard to the meeting point
     Eigen::Vector3d m_wrist_target = Eigen::Vector3d::Zero(), m_slip_offset = Eigen::Vector3d::Zero();
     std::array<UserStrikeEvent, 8> m_events;
     int m_event_count = 0;
