@@ -164,7 +164,17 @@ void Fighter::move(double t_s) {
 
 void Fighter::show(double t_s) {
     Parts& p = *m_parts;
-    if (m_settings.human_speed) p.speed_limit.apply(t_s, MotionMeter::move_kind(*this, p.db), p.body);
+    const MoveKind kind = MotionMeter::move_kind(*this, p.db);
+    if (m_settings.human_speed) p.speed_limit.apply(t_s, kind, p.body);
+    else if (m_settings.human_speed_blocks) { // the blocking arm alone (noted every frame: the last pose shown)
+        const Defence& defence = p.defence.defence();
+        // ... and an arm still behind the pose asked for after its block (a blow landed, the move cancelled): it
+        // catches up at the speeds of what comes next instead of in one frame.
+        unsigned limbs = kind == MoveKind::block ? 1u << defence.block_arm() : 0u;
+        for (int arm = 0; arm < 2; ++arm) if (p.speed_limit.shown_share(arm) < 1.0) limbs |= 1u << arm;
+        p.speed_limit.apply(t_s, kind, p.body, limbs);
+    }
+    if ((m_settings.human_speed || m_settings.human_speed_blocks) && p.speed_limit.held()) p.defence.shown_held(p.body);
     p.defence.note_shown_arm(t_s, p.body);
     p.body.update_heading();
 }

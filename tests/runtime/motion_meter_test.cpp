@@ -158,9 +158,10 @@ namespace {
 // 30 s against a user who punches at the fighter and walks, with orders of punches and kicks: blocks against fists
 // that leave little time (the synthesized block's arm was asked for 20-80 rad/s at the elbow), strikes, recoveries,
 // steps. The meter of the bout, and the frames the fighter's speed limit held back.
-MotionMeter punching_bout(const MotionDatabaseView& db, bool human_speed, long long& held) {
+MotionMeter punching_bout(const MotionDatabaseView& db, bool human_speed, long long& held, bool human_speed_blocks = true) {
     FighterSettings settings;
     settings.human_speed = human_speed;
+    settings.human_speed_blocks = human_speed_blocks;
     kumite::test::Bout bout(db, "brawler", settings);
     MotionMeter meter(1);
     SimulatedUser user(SimulatedKind::punch, 7);
@@ -200,11 +201,18 @@ TEST_CASE("fighter: no joint moves faster than the library's fastest for its kin
     REQUIRE(meter.frames()[int(MoveKind::punch)] > 30);
     CHECK(held > 0); // the parts asked for more than a person's speed somewhere, and were held to it
 
-    // Without the limit the same bout goes over: the block's arm, the strikes' recoveries.
+    // Without the limit, blocks included (--superhuman-blocks), the same bout goes over: the block's arm.
     long long held_free = 0;
-    const MotionMeter free_meter = punching_bout(content->view(), false, held_free);
+    const MotionMeter free_meter = punching_bout(content->view(), false, held_free, false);
     CHECK(held_free == 0);
     CHECK(free_meter.fastest_overall().wrist_mps > k_human_extremity_mps);
+
+    // The defaults: the blocking arm alone held to the block's bar, the rest as asked (within a person's wrist
+    // speed here too since the blends, the offset ramp and the trunk's lean no longer jump).
+    long long held_blocks = 0;
+    const MotionMeter default_meter = punching_bout(content->view(), false, held_blocks);
+    CHECK(held_blocks > 0);
+    CHECK(default_meter.fastest()[int(MoveKind::block)].wrist_mps <= 1.002 * speed_bar(library, MoveKind::block).wrist_mps);
 }
 
 TEST_CASE("fighter: held to human speed, strikes land later instead of short, and the limbs under their bar are not held",

@@ -39,6 +39,10 @@ public:
     // After the speed limit: the blocking arm's speed as shown, for the block's event (when apply() edited one).
     void note_shown_arm(double now_s, const CharacterBody& body);
 
+    // The speed limit held the pose shown back from the one the edits asked for: the recording's MIR follows it.
+    void shown_held(CharacterBody& body) {
+        if (m_shown) body.encode(m_shown_mir);
+    }
     // The pose shown with the edits, in the MIR (for a recording), and whether this frame's pose carries them.
     bool shown() const { return m_shown; }
     const MirFrame& shown_mir() const { return m_shown_mir; }

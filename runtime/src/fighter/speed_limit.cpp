@@ -79,7 +79,7 @@ std::array<double, 4> SpeedLimit::limb_ratios(const LimbSample& sample, const Jo
     return ratios;
 }
 
-bool SpeedLimit::hold_limbs(const JointSpeeds& bar, double dt_s, const std::array<double, 4>& asked_ratios, CharacterBody& body) {
+bool SpeedLimit::hold_limbs(const JointSpeeds& bar, double dt_s, const std::array<double, 4>& asked_ratios, unsigned limbs, CharacterBody& body) {
     if (std::size_t(body.index()) >= m_limb_of_joint.size()) return false;
     const std::vector<int>& limb_of_joint = m_limb_of_joint[std::size_t(body.index())];
     const RestAnatomy& anatomy = body.anatomy();
@@ -109,10 +109,10 @@ bool SpeedLimit::hold_limbs(const JointSpeeds& bar, double dt_s, const std::arra
     body.show_edited_pose();
     // A limb the trunk alone carries too fast (a turn, a lunge) is over its bar with its own joints held: the whole
     // pose is held instead.
-    const std::array<double, 4> ratios = limb_ratios(LimbSample::of(anatomy, body.positions()), bar, dt_s);
-    if (*std::max_element(ratios.begin(), ratios.end()) > 1.001) return false;
+    std::array<double, 4> ratios = limb_ratios(LimbSample::of(anatomy, body.positions()), bar, dt_s);
+    for (std::size_t k = 0; k < 4; ++k) if (!(limbs & (1u << k))) ratios[k] = 0.0;
     m_shown_share = under;
-    return true;
+    return *std::max_element(ratios.begin(), ratios.end()) <= 1.001 || limbs != k_all_limbs; // some limbs only: as held
 }
 
 void SpeedLimit::hold_pose(const JointSpeeds& bar, double dt_s, double over, CharacterBody& body) {
@@ -132,7 +132,7 @@ void SpeedLimit::hold_pose(const JointSpeeds& bar, double dt_s, double over, Cha
     m_shown_share = {search.under, search.under, search.under, search.under};
 }
 
-void SpeedLimit::apply(double t_s, MoveKind kind, CharacterBody& body) {
+void SpeedLimit::apply(double t_s, MoveKind kind, CharacterBody& body, unsigned limbs) {
     const RestAnatomy& anatomy = body.anatomy();
     const double dt_s = t_s - m_last_s;
     m_shown_share = {1.0, 1.0, 1.0, 1.0};
@@ -141,13 +141,14 @@ void SpeedLimit::apply(double t_s, MoveKind kind, CharacterBody& body) {
     if (comparable) {
         const JointSpeeds bar = speed_bar(m_library->per_character[std::size_t(body.index())], kind);
         const LimbSample asked = LimbSample::of(anatomy, body.positions());
-        const std::array<double, 4> ratios = limb_ratios(asked, bar, dt_s);
+        std::array<double, 4> ratios = limb_ratios(asked, bar, dt_s);
+        for (std::size_t k = 0; k < 4; ++k) if (!(limbs & (1u << k))) ratios[k] = 0.0; // not held: as asked
         const double over = *std::max_element(ratios.begin(), ratios.end());
         if (over > 1.0) {
             // The limbs over their bar held back on their own (a punch's leg that lunges too fast does not slow its
             // fist); when the trunk itself carries one too fast, the whole pose.
             m_asked = body.pose();
-            if (!hold_limbs(bar, dt_s, ratios, body)) {
+            if (!hold_limbs(bar, dt_s, ratios, limbs, body)) {
                 body.pose() = m_asked;
                 hold_pose(bar, dt_s, over, body);
             }

@@ -13,6 +13,7 @@
 
 #include "kumite/runtime/joint_speeds.h"
 
+#include <algorithm>
 #include <array>
 #include <memory>
 #include <vector>
@@ -31,8 +32,11 @@ public:
 
     // The next pose is shown as it is (the first frame, a new character).
     void reset() { m_has_last = false; }
-    // Holds the body's pose to the bar of `kind` since the last frame shown, `t_s` now.
-    void apply(double t_s, MoveKind kind, CharacterBody& body);
+    // Holds the body's pose to the bar of `kind` since the last frame shown, `t_s` now. `limbs`: the limbs held
+    // (bit k: LimbSample's order, arm l, arm r, leg l, leg r); with fewer than all, only those limbs are held, on
+    // their own (the rest and the trunk shown as asked). 0: nothing held, the pose only noted as the last shown.
+    void apply(double t_s, MoveKind kind, CharacterBody& body, unsigned limbs = k_all_limbs);
+    static constexpr unsigned k_all_limbs = 0xFu;
 
     // Frames held back (the pose shown short of the asked one), per kind, and the furthest a wrist or ankle was
     // left behind the pose asked for (m).
@@ -41,12 +45,13 @@ public:
     // The share of the way from the last pose to the asked one this frame showed, per limb (arm l, arm r, leg l,
     // leg r; Limb's order; 1: all of it, not held back).
     double shown_share(int limb) const { return limb >= 0 && limb < 4 ? m_shown_share[std::size_t(limb)] : 1.0; }
+    bool held() const { return *std::min_element(m_shown_share.begin(), m_shown_share.end()) < 1.0; } // this frame
 
 private:
     // Each limb's fastest measure against its bar (> 1: over), from the last pose shown to `sample`.
     std::array<double, 4> limb_ratios(const LimbSample& sample, const JointSpeeds& bar, double dt_s) const;
     // The limbs over their bar held back on their own; false when that is not enough (the trunk carries one too fast).
-    bool hold_limbs(const JointSpeeds& bar, double dt_s, const std::array<double, 4>& asked_ratios, CharacterBody& body);
+    bool hold_limbs(const JointSpeeds& bar, double dt_s, const std::array<double, 4>& asked_ratios, unsigned limbs, CharacterBody& body);
     void hold_pose(const JointSpeeds& bar, double dt_s, double over, CharacterBody& body); // the whole pose, one share
 
     std::shared_ptr<const LibrarySpeeds> m_library;

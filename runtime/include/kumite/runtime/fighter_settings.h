@@ -88,6 +88,9 @@ struct FighterSettings {
     // a part that asks for more is shown lagging. Off until the defence reads punches early enough to block at that
     // speed (runtime/README.md, "Human speed").
     bool human_speed = false;
+    // Blocks at human speed (issue 44) with human_speed off: the blocking arm alone held to the library's block
+    // speeds (a synthesized block seen late moved its wrist at up to 24 m/s); the rest of the body as asked.
+    bool human_speed_blocks = true;
     // Hit reactions (issue 44): a user strike that lands on the head or chest moves the fighter's head and trunk the
     // way it pushes, from the database's captured hit reactions (hit_reactions.h), blended in over
     // `reaction_blend_s`, then back to the guard. A strike under way is played out first. The blend is as long as the
