@@ -450,18 +450,34 @@ bool StrikeAdapter::beyond_limb_reach(const Eigen::Vector3d& wanted) const {
 
 namespace {
 
-// The turn about `centre`, in the plane of `from` and `to` (from the centre), that brings the point `from` just
-// within `reach` of the point `to`: the least of FromTwoVectors(from, to) that does (all of it when even that does
-// not; none when it already is). Distance falls monotonically along the turn: |f|^2 + |t|^2 - 2|f||t| cos(a - phi).
+// The turn about the pivot, in the plane of `from` and `to` (the limb's root and the target, from the pivot), that
+// brings the root just within `reach` of the target: the least of FromTwoVectors(from, to) that does (none when it
+// already is). It stops sooner where the turn stops paying: where the root, swinging about the pivot, comes
+// nearer the target at less than half the speed it swings at (a pelvis turned about the support hip towards a
+// target along the hips' line would swing the whole body for a centimetre; full alignment there turned it to its
+// limit in a frame). The turn is a continuous function of the target either way.
 Eigen::Quaterniond turn_within_reach(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double reach) {
-    const Eigen::Quaterniond full = Eigen::Quaterniond::FromTwoVectors(from, to);
     const double f = from.norm(), t = to.norm();
     if ((from - to).norm() <= reach) return Eigen::Quaterniond::Identity();
     const double angle = std::acos(std::clamp(from.dot(to) / (f * t), -1.0, 1.0));
+    if (angle < 1e-9) return Eigen::Quaterniond::Identity();
+    // With `left` of the angle still to turn: the root's distance to the target, and how fast it falls per radian.
+    auto distance = [&](double left) { return std::sqrt(std::max(0.0, f * f + t * t - 2.0 * f * t * std::cos(left))); };
+    auto pays = [&](double left) { return t * std::sin(left) >= 0.5 * distance(left); };
+    // Least turn into reach (all of it when even that does not reach).
     const double c = (f * f + t * t - reach * reach) / (2.0 * f * t);
-    if (c >= 1.0 || angle < 1e-9) return full;
-    const double phi = std::clamp(angle - std::acos(c), 0.0, angle);
-    return Eigen::Quaterniond::Identity().slerp(phi / angle, full);
+    double left = c >= 1.0 ? 0.0 : std::acos(c);
+    if (!pays(left)) { // past the point where it stops paying: turn as far as that point (bisection)
+        double paying = angle, idle = left;
+        if (!pays(paying)) return Eigen::Quaterniond::Identity();
+        for (int iteration = 0; iteration < 30; ++iteration) {
+            const double middle = 0.5 * (paying + idle);
+            (pays(middle) ? paying : idle) = middle;
+        }
+        left = paying;
+    }
+    const double phi = std::clamp(angle - left, 0.0, angle);
+    return Eigen::Quaterniond::Identity().slerp(phi / angle, Eigen::Quaterniond::FromTwoVectors(from, to));
 }
 
 } // namespace
