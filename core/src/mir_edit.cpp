@@ -65,6 +65,17 @@ Eigen::Quaterniond limb_part_blend(const Eigen::Quaterniond& a, const Eigen::Qua
     return (identity.slerp(w, swing) * identity.slerp(w, twist) * a).normalized();
 }
 
+// A limb's reach (root to extremity, limb lengths) part of the way from `a` to `b`: its direction along the great
+// circle, its length in between. A straight line between the two would shorten the limb on the way (the elbow
+// bending and straightening again in every blend between two straight arms).
+Eigen::Vector3d blend_reach(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double w) {
+    const double length_a = a.norm(), length_b = b.norm();
+    const double length = (1.0 - w) * length_a + w * length_b;
+    if (length_a < 1e-9 || length_b < 1e-9) return (1.0 - w) * a + w * b;
+    const Eigen::Quaterniond turn = Eigen::Quaterniond::Identity().slerp(w, Eigen::Quaterniond::FromTwoVectors(a, b));
+    return length * (turn * (a / length_a));
+}
+
 } // namespace
 
 void mir_frame_move_on_floor(MirFrame& frame, const FloorAlignment& motion, double leg_length) {
@@ -84,7 +95,7 @@ void mir_frame_blend(MirFrame& out, const MirFrame& a, const MirFrame& b, double
     std::array<Eigen::Vector3d, k_limb_count> extremity_world;
     for (int limb = 0; limb < k_limb_count; ++limb) {
         const int parent = limb_parent_part(b, limb);
-        extremity_world[limb] = (1.0 - w) * (a.part_frames[parent] * a.extremity[limb]) + w * (b.part_frames[parent] * b.extremity[limb]);
+        extremity_world[limb] = blend_reach(a.part_frames[parent] * a.extremity[limb], b.part_frames[parent] * b.extremity[limb], w);
     }
     for (int part = 0; part < k_body_part_count; ++part) {
         out.has_part[part] = b.has_part[part];
