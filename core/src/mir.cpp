@@ -52,8 +52,6 @@ Eigen::Vector3d limb_swivel_reference(const MirFrame& frame, int limb) {
 
 namespace {
 
-bool is_trunk_part(int part) { return part <= static_cast<int>(BodyPart::head); }
-
 // Mirror of a world anatomical frame: M G D, with D flipping the axis that mirroring reverses in the rest frame
 // (the lateral axis of a trunk frame, the third axis of a limb frame).
 Eigen::Quaterniond mirror_frame(const Eigen::Quaterniond& frame, const Eigen::Matrix3d& reflection, bool trunk) {

@@ -36,8 +36,6 @@ void turn_above_chest(MirFrame& frame, const Eigen::Quaterniond& rotation) {
     turn_arm(frame, rotation, false);
 }
 
-bool is_trunk_part(int part) { return part <= static_cast<int>(BodyPart::head); }
-
 // The part whose frame a limb's extremity is expressed in (RestAnatomy's LimbChain::parent_part): an arm's clavicle
 // (the chest without one), a leg's pelvis.
 int limb_parent_part(const MirFrame& frame, int limb) {

@@ -119,4 +119,8 @@ double limb_swivel(const Eigen::Vector3d& root, const Eigen::Vector3d& middle, c
 // The reference direction for a limb's swivel: down from the chest for arms, forward from the pelvis for legs.
 Eigen::Vector3d limb_swivel_reference(const MirFrame& frame, int limb);
 
+// Whether a body part's MIR frame is a trunk frame (pelvis to head: its lateral axis is the one a mirror reverses)
+// rather than a limb frame (the bone as its y axis, its turn about the bone a convention of the skeleton).
+inline bool is_trunk_part(int part) { return part <= static_cast<int>(BodyPart::head); }
+
 } // namespace kumite
