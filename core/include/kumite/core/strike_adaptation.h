@@ -16,8 +16,12 @@
 //     support hip for leg strikes), each turned just so far that the limb's root comes within that reach of the
 //     target (a knee or elbow strike: onto the point the upper bone's length from it), within its joint limit
 //     (settings), until 1 mm or the iteration budget; the limb is then solved again onto the closest point it
-//     reaches. Every frame starts from the clip's own frame and turns no further than needed, so the result is a
-//     smooth function of the target: no jitter, no jump where the target leaves the limb's reach.
+//     reaches; a pivot stops where its turn no longer pays (the root nearing the target at less than half the
+//     speed it swings). The turns the contact frame needs are found at begin() (and at each retarget) and the
+//     trunk leans into the strike by the offset ramp's share of them (extremity strikes; d(tc) measured from the
+//     leaned hit point), the CCD topping up what is left. Every frame starts from the clip's own frame and turns
+//     no further than needed, so the result is a smooth function of the target: no jitter, no jump where the
+//     target leaves the limb's reach.
 //  5. the support feet — planted both in the current motion and in the clip's start — stay pinned where they
 //     were when the strike began, for the whole strike; a kick's kicking foot is free. When the clip's hips rise
 //     beyond what a pinned leg reaches, the hips are lowered towards the foot instead of lifting it.
