@@ -24,6 +24,12 @@ struct ShareSearch {
     }
 };
 
+// The ratios of the limbs `limbs` holds; the others 0 (not held: shown as asked).
+std::array<double, 4> held_only(std::array<double, 4> ratios, unsigned limbs) {
+    for (std::size_t k = 0; k < 4; ++k) if (!(limbs & (1u << k))) ratios[k] = 0.0;
+    return ratios;
+}
+
 // `out` part of the way from `from` to `to` (share in [0, 1]); the three poses are of one skeleton.
 void blend_pose(Pose& out, const Pose& from, const Pose& to, double share) {
     out.root_translation = from.root_translation + share * (to.root_translation - from.root_translation);
@@ -109,8 +115,7 @@ bool SpeedLimit::hold_limbs(const JointSpeeds& bar, double dt_s, const std::arra
     body.show_edited_pose();
     // A limb the trunk alone carries too fast (a turn, a lunge) is over its bar with its own joints held: the whole
     // pose is held instead.
-    std::array<double, 4> ratios = limb_ratios(LimbSample::of(anatomy, body.positions()), bar, dt_s);
-    for (std::size_t k = 0; k < 4; ++k) if (!(limbs & (1u << k))) ratios[k] = 0.0;
+    const std::array<double, 4> ratios = held_only(limb_ratios(LimbSample::of(anatomy, body.positions()), bar, dt_s), limbs);
     m_shown_share = under;
     return *std::max_element(ratios.begin(), ratios.end()) <= 1.001 || limbs != k_all_limbs; // some limbs only: as held
 }
@@ -141,8 +146,7 @@ void SpeedLimit::apply(double t_s, MoveKind kind, CharacterBody& body, unsigned 
     if (comparable) {
         const JointSpeeds bar = speed_bar(m_library->per_character[std::size_t(body.index())], kind);
         const LimbSample asked = LimbSample::of(anatomy, body.positions());
-        std::array<double, 4> ratios = limb_ratios(asked, bar, dt_s);
-        for (std::size_t k = 0; k < 4; ++k) if (!(limbs & (1u << k))) ratios[k] = 0.0; // not held: as asked
+        const std::array<double, 4> ratios = held_only(limb_ratios(asked, bar, dt_s), limbs);
         const double over = *std::max_element(ratios.begin(), ratios.end());
         if (over > 1.0) {
             // The limbs over their bar held back on their own (a punch's leg that lunges too fast does not slow its
