@@ -8,17 +8,23 @@ namespace {
 constexpr Limb k_sample_limbs[4] = {Limb::arm_l, Limb::arm_r, Limb::leg_l, Limb::leg_r}; // LimbSample's order
 
 // The search for the share of a step that brings a measure to its bar: the largest share known under the bar (0: the
-// last pose, no speed at all), the smallest known over it, the next to try — estimated from the ratio (near linear in
-// the share over one frame), else halfway. Done once the ratio is just under the bar or the bracket is closed.
+// last pose, taken as no speed at all), the smallest known over it (1: the asked pose), and the ratios measured
+// there; the next share to try is where the line between them reaches just under the bar (the ratio is near linear
+// in the share over one frame, though not through 0 where the trunk carries the limb: aimed at the bar itself,
+// the estimates crept up to it from above and never got under), else halfway. Done once the ratio is within
+// [0.98, 1] of the bar or the bracket is closed.
 struct ShareSearch {
+    static constexpr double k_aim = 0.99;
     double under = 0.0, above = 1.0, share = 1.0;
-    explicit ShareSearch(double asked_ratio) : share(1.0 / asked_ratio) {}
+    double ratio_under = 0.0, ratio_above = 1.0;
+    explicit ShareSearch(double asked_ratio) : share(k_aim / asked_ratio), ratio_above(asked_ratio) {}
     // The ratio measured at `share`; true when done (`under` is the answer).
     bool measured(double ratio) {
-        if (ratio <= 1.001) under = share;
-        else above = share;
-        if ((ratio <= 1.001 && ratio >= 0.98) || above - under <= 1e-3) return true;
-        const double estimate = ratio > 1e-6 ? share / ratio : above;
+        if (ratio <= 1.0) under = share, ratio_under = ratio;
+        else above = share, ratio_above = ratio;
+        if ((ratio <= 1.0 && ratio >= 0.98) || above - under <= 1e-3) return true;
+        const double slope = (ratio_above - ratio_under) / (above - under);
+        const double estimate = slope > 1e-9 ? under + (k_aim - ratio_under) / slope : 0.5 * (under + above);
         share = estimate > under && estimate < above ? estimate : 0.5 * (under + above);
         return false;
     }
@@ -117,7 +123,7 @@ bool SpeedLimit::hold_limbs(const JointSpeeds& bar, double dt_s, const std::arra
     // pose is held instead.
     const std::array<double, 4> ratios = held_only(limb_ratios(LimbSample::of(anatomy, body.positions()), bar, dt_s), limbs);
     m_shown_share = under;
-    return *std::max_element(ratios.begin(), ratios.end()) <= 1.001 || limbs != k_all_limbs; // some limbs only: as held
+    return *std::max_element(ratios.begin(), ratios.end()) <= 1.0 || limbs != k_all_limbs; // some limbs only: as held
 }
 
 void SpeedLimit::hold_pose(const JointSpeeds& bar, double dt_s, double over, CharacterBody& body) {
