@@ -162,6 +162,7 @@ MotionMeter punching_bout(const MotionDatabaseView& db, bool human_speed, long l
     FighterSettings settings;
     settings.human_speed = human_speed;
     settings.human_speed_blocks = human_speed_blocks;
+    settings.human_extremities = human_speed_blocks; // superhuman blocks here: nothing held at all
     kumite::test::Bout bout(db, "brawler", settings);
     MotionMeter meter(1);
     SimulatedUser user(SimulatedKind::punch, 7);
@@ -201,7 +202,8 @@ TEST_CASE("fighter: no joint moves faster than the library's fastest for its kin
     REQUIRE(meter.frames()[int(MoveKind::punch)] > 30);
     CHECK(held > 0); // the parts asked for more than a person's speed somewhere, and were held to it
 
-    // Without the limit, blocks included (--superhuman-blocks), the same bout goes over: the block's arm.
+    // Without the limit, blocks and wrists included (--superhuman-blocks --superhuman-extremities), the same bout goes
+    // over: the block's arm.
     long long held_free = 0;
     const MotionMeter free_meter = punching_bout(content->view(), false, held_free, false);
     CHECK(held_free == 0);
@@ -242,6 +244,63 @@ TEST_CASE("fighter: held to human speed, strikes land later instead of short, an
     CHECK(held[int(MoveKind::punch)] + held[int(MoveKind::kick)] > 0); // the adaptation asked for more than the library's somewhere
     CHECK(hits >= 0.9 * strikes); // ... and the strikes still reached the head
     CHECK(worst_contact_m < 0.12);
+}
+
+namespace {
+
+// 40 s of punches and kicks against a still head, asked to land at `strike_mps` (sped up to 1.9 times their
+// captured speed): the meter, hits over strikes, and the strike frames held back.
+MotionMeter fast_strikes_bout(const MotionDatabaseView& db, double strike_mps, bool human_extremities, int& strikes, int& hits, long long& held) {
+    FighterSettings settings;
+    settings.punch_speed_mps = settings.kick_speed_mps = strike_mps;
+    settings.max_speedup = 1.9;
+    settings.human_extremities = human_extremities;
+    kumite::test::Bout bout(db, "giant", settings);
+    MotionMeter meter(1);
+    const Eigen::Vector3d head(0.0, 1.6, 1.5);
+    int ordered = 0;
+    for (int frame = 0; frame < 40 * 60; ++frame) {
+        const double t = frame / 60.0;
+        if (t >= 1.0 + 2.0 * ordered && ordered < 19) bout.fighter->order(bout.retriever->semantics_id(ordered++ % 2 ? "kick" : "punch"), Side::none);
+        bout.fighter->step(t, &head);
+        meter.measure(0, t, *bout.fighter, bout.db, bout.brawler.anatomy, &head);
+        for (const FighterEvent& event : bout.fighter->events()) {
+            if (event.type != FighterEvent::Type::strike) continue;
+            ++strikes;
+            hits += event.hit;
+        }
+        bout.fighter->clear_events();
+    }
+    const auto& held_frames = bout.fighter->held_back_frames();
+    held = held_frames[int(MoveKind::punch)] + held_frames[int(MoveKind::kick)];
+    return meter;
+}
+
+} // namespace
+
+TEST_CASE("fighter: asked for strikes faster than a person's, no wrist or ankle is shown over 12 m/s and the strikes land later",
+          "[runtime][corpus]") {
+    const MotionDatabaseContent* content = kumite::test::reference_database();
+    if (!content) return;
+    int strikes_free = 0, hits_free = 0;
+    long long held_free = 0;
+    const JointSpeeds free = fast_strikes_bout(content->view(), 30.0, false, strikes_free, hits_free, held_free).fastest_overall();
+    INFO("as asked (--superhuman-extremities): fastest wrist " << free.wrist_mps << " m/s, ankle " << free.ankle_mps);
+    CHECK(std::max(free.wrist_mps, free.ankle_mps) > k_human_extremity_mps); // the case exists
+    CHECK(held_free == 0);
+
+    int strikes = 0, hits = 0;
+    long long held = 0;
+    const MotionMeter meter = fast_strikes_bout(content->view(), 30.0, true, strikes, hits, held);
+    INFO(strikes << " strikes, " << hits << " hits; " << held << " strike frames held back");
+    for (int k = 0; k < k_move_kind_count; ++k) {
+        CAPTURE(move_kind_name(MoveKind(k)));
+        CHECK(meter.fastest()[std::size_t(k)].wrist_mps <= k_human_extremity_mps);
+        CHECK(meter.fastest()[std::size_t(k)].ankle_mps <= k_human_extremity_mps);
+    }
+    CHECK(held > 0);
+    CHECK(strikes >= 15);
+    CHECK(hits >= 0.9 * strikes); // held back, not cut short: they still reach the head
 }
 
 TEST_CASE("joint speeds: the bar of each kind of move", "[runtime]") {

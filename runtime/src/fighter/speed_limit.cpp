@@ -30,12 +30,6 @@ struct ShareSearch {
     }
 };
 
-// The ratios of the limbs `limbs` holds; the others 0 (not held: shown as asked).
-std::array<double, 4> held_only(std::array<double, 4> ratios, unsigned limbs) {
-    for (std::size_t k = 0; k < 4; ++k) if (!(limbs & (1u << k))) ratios[k] = 0.0;
-    return ratios;
-}
-
 // `out` part of the way from `from` to `to` (share in [0, 1]); the three poses are of one skeleton.
 void blend_pose(Pose& out, const Pose& from, const Pose& to, double share) {
     out.root_translation = from.root_translation + share * (to.root_translation - from.root_translation);
@@ -79,19 +73,21 @@ void SpeedLimit::map_limbs(const std::vector<CharacterRig*>& characters) {
     }
 }
 
-std::array<double, 4> SpeedLimit::limb_ratios(const LimbSample& sample, const JointSpeeds& bar, double dt_s) const {
+std::array<double, 4> SpeedLimit::limb_ratios(const LimbSample& sample, const LimbBars& bars, double dt_s) const {
     auto ratio = [](double value, double limit) { return limit > 0.0 ? value / limit : 0.0; };
     std::array<double, 4> ratios{};
-    for (int k = 0; k < 4; ++k) {
+    for (std::size_t k = 0; k < 4; ++k) {
         const bool arm = k < 2;
+        const JointSpeeds& bar = bars[k];
         const double travel = (sample.extremity[k] - m_last_sample.extremity[k]).norm() / dt_s;
         const double bend = std::abs(sample.flexion_rad[k] - m_last_sample.flexion_rad[k]) / dt_s;
-        ratios[std::size_t(k)] = std::max(ratio(travel, arm ? bar.wrist_mps : bar.ankle_mps), ratio(bend, arm ? bar.elbow_radps : bar.knee_radps));
+        ratios[k] = std::max(ratio(travel, arm ? bar.wrist_mps : bar.ankle_mps), ratio(bend, arm ? bar.elbow_radps : bar.knee_radps));
     }
     return ratios;
 }
 
-bool SpeedLimit::hold_limbs(const JointSpeeds& bar, double dt_s, const std::array<double, 4>& asked_ratios, unsigned limbs, CharacterBody& body) {
+bool SpeedLimit::hold_limbs(const LimbBars& bars, const LimbBars& whole_pose_bars, double dt_s, const std::array<double, 4>& asked_ratios,
+                            CharacterBody& body) {
     if (std::size_t(body.index()) >= m_limb_of_joint.size()) return false;
     const std::vector<int>& limb_of_joint = m_limb_of_joint[std::size_t(body.index())];
     const RestAnatomy& anatomy = body.anatomy();
@@ -109,7 +105,7 @@ bool SpeedLimit::hold_limbs(const JointSpeeds& bar, double dt_s, const std::arra
     for (int refine = 0; refine < 10 && !(done[0] && done[1] && done[2] && done[3]); ++refine) {
         blend_limbs(body.pose(), m_last, m_asked, limb_of_joint, share);
         body.show_edited_pose();
-        const std::array<double, 4> ratios = limb_ratios(LimbSample::of(anatomy, body.positions()), bar, dt_s);
+        const std::array<double, 4> ratios = limb_ratios(LimbSample::of(anatomy, body.positions()), bars, dt_s);
         for (std::size_t k = 0; k < 4; ++k) {
             if (asked_ratios[k] <= 1.0) continue;
             done[k] = searches[k].measured(ratios[k]);
@@ -120,20 +116,20 @@ bool SpeedLimit::hold_limbs(const JointSpeeds& bar, double dt_s, const std::arra
     blend_limbs(body.pose(), m_last, m_asked, limb_of_joint, under);
     body.show_edited_pose();
     // A limb the trunk alone carries too fast (a turn, a lunge) is over its bar with its own joints held: the whole
-    // pose is held instead.
-    const std::array<double, 4> ratios = held_only(limb_ratios(LimbSample::of(anatomy, body.positions()), bar, dt_s), limbs);
+    // pose is held instead, to the bars that hold whatever carries the limb.
+    const std::array<double, 4> ratios = limb_ratios(LimbSample::of(anatomy, body.positions()), whole_pose_bars, dt_s);
     m_shown_share = under;
-    return *std::max_element(ratios.begin(), ratios.end()) <= 1.0 || limbs != k_all_limbs; // some limbs only: as held
+    return *std::max_element(ratios.begin(), ratios.end()) <= 1.0;
 }
 
-void SpeedLimit::hold_pose(const JointSpeeds& bar, double dt_s, double over, CharacterBody& body) {
+void SpeedLimit::hold_pose(const LimbBars& bars, double dt_s, double over, CharacterBody& body) {
     const RestAnatomy& anatomy = body.anatomy();
     // Part of the way: the share that brings the fastest joint to its bar; the one found under the bar is shown.
     ShareSearch search(over);
     for (int refine = 0; refine < 10; ++refine) {
         blend_pose(body.pose(), m_last, m_asked, search.share);
         body.show_edited_pose();
-        const std::array<double, 4> ratios = limb_ratios(LimbSample::of(anatomy, body.positions()), bar, dt_s);
+        const std::array<double, 4> ratios = limb_ratios(LimbSample::of(anatomy, body.positions()), bars, dt_s);
         if (search.measured(*std::max_element(ratios.begin(), ratios.end()))) break;
     }
     if (search.share != search.under) { // the last one tried was over the bar
@@ -143,24 +139,43 @@ void SpeedLimit::hold_pose(const JointSpeeds& bar, double dt_s, double over, Cha
     m_shown_share = {search.under, search.under, search.under, search.under};
 }
 
-void SpeedLimit::apply(double t_s, MoveKind kind, CharacterBody& body, unsigned limbs) {
+void SpeedLimit::apply(double t_s, MoveKind kind, CharacterBody& body, unsigned limbs, bool extremities) {
     const RestAnatomy& anatomy = body.anatomy();
     const double dt_s = t_s - m_last_s;
     m_shown_share = {1.0, 1.0, 1.0, 1.0};
+    m_library_held = 0u;
     const bool comparable = m_has_last && m_character == body.index() && dt_s > 0.0 && m_library &&
                             body.index() < int(m_library->per_character.size());
     if (comparable) {
-        const JointSpeeds bar = speed_bar(m_library->per_character[std::size_t(body.index())], kind);
+        // Each limb's bar: the library's for its kind (`limbs`), a person's wrist or ankle (`extremities`), or none.
+        // The whole pose, when a limb's own joints are not enough, is held to the library's only with every limb
+        // under it (a slip's trunk is not slowed for the blocking arm it carries).
+        const JointSpeeds library = speed_bar(m_library->per_character[std::size_t(body.index())], kind);
+        JointSpeeds person;
+        if (extremities) person.wrist_mps = person.ankle_mps = k_human_extremity_mps;
+        LimbBars bars, whole_pose_bars;
+        for (std::size_t k = 0; k < 4; ++k) {
+            const bool held_to_library = limbs & (1u << k);
+            bars[k] = held_to_library ? library : person;
+            whole_pose_bars[k] = held_to_library && limbs == k_all_limbs ? library : person;
+        }
         const LimbSample asked = LimbSample::of(anatomy, body.positions());
-        const std::array<double, 4> ratios = held_only(limb_ratios(asked, bar, dt_s), limbs);
+        const std::array<double, 4> ratios = limb_ratios(asked, bars, dt_s);
         const double over = *std::max_element(ratios.begin(), ratios.end());
         if (over > 1.0) {
             // The limbs over their bar held back on their own (a punch's leg that lunges too fast does not slow its
             // fist); when the trunk itself carries one too fast, the whole pose.
             m_asked = body.pose();
-            if (!hold_limbs(bar, dt_s, ratios, limbs, body)) {
-                body.pose() = m_asked;
-                hold_pose(bar, dt_s, over, body);
+            if (!hold_limbs(bars, whole_pose_bars, dt_s, ratios, body)) {
+                const std::array<double, 4> whole_ratios = limb_ratios(asked, whole_pose_bars, dt_s);
+                const double whole_over = *std::max_element(whole_ratios.begin(), whole_ratios.end());
+                if (whole_over > 1.0) {
+                    body.pose() = m_asked;
+                    hold_pose(whole_pose_bars, dt_s, whole_over, body);
+                }
+            }
+            for (std::size_t k = 0; k < 4; ++k) {
+                if (m_shown_share[k] < 1.0 && (limbs & (1u << k))) m_library_held |= 1u << k;
             }
             // What comes next (a blend, a strike) starts from the pose shown, not from the one asked for.
             body.encode(body.mir());

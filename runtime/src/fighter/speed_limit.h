@@ -33,9 +33,11 @@ public:
     // The next pose is shown as it is (the first frame, a new character).
     void reset() { m_has_last = false; }
     // Holds the body's pose to the bar of `kind` since the last frame shown, `t_s` now. `limbs`: the limbs held
-    // (bit k: LimbSample's order, arm l, arm r, leg l, leg r); with fewer than all, only those limbs are held, on
-    // their own (the rest and the trunk shown as asked). 0: nothing held, the pose only noted as the last shown.
-    void apply(double t_s, MoveKind kind, CharacterBody& body, unsigned limbs = k_all_limbs);
+    // to it (bit k: LimbSample's order, arm l, arm r, leg l, leg r); with fewer than all, only those limbs are held,
+    // on their own (the trunk shown as asked). `extremities`: every other wrist and ankle held to a person's
+    // (k_human_extremity_mps; its elbow or knee free), the whole pose when the trunk carries one too fast. 0 and
+    // false: nothing held, the pose only noted as the last shown.
+    void apply(double t_s, MoveKind kind, CharacterBody& body, unsigned limbs = k_all_limbs, bool extremities = false);
     static constexpr unsigned k_all_limbs = 0xFu;
 
     // Frames held back (the pose shown short of the asked one), per kind, and the furthest a wrist or ankle was
@@ -46,13 +48,18 @@ public:
     // leg r; Limb's order; 1: all of it, not held back).
     double shown_share(int limb) const { return limb >= 0 && limb < 4 ? m_shown_share[std::size_t(limb)] : 1.0; }
     bool held() const { return *std::min_element(m_shown_share.begin(), m_shown_share.end()) < 1.0; } // this frame
+    // Whether this frame held `limb` back to the library's bar (not only a person's wrist or ankle).
+    bool held_to_library(int limb) const { return limb >= 0 && limb < 4 && (m_library_held & (1u << limb)); }
 
 private:
+    using LimbBars = std::array<JointSpeeds, 4>; // per limb, LimbSample's order; a measure left 0 is free
     // Each limb's fastest measure against its bar (> 1: over), from the last pose shown to `sample`.
-    std::array<double, 4> limb_ratios(const LimbSample& sample, const JointSpeeds& bar, double dt_s) const;
-    // The limbs over their bar held back on their own; false when that is not enough (the trunk carries one too fast).
-    bool hold_limbs(const JointSpeeds& bar, double dt_s, const std::array<double, 4>& asked_ratios, unsigned limbs, CharacterBody& body);
-    void hold_pose(const JointSpeeds& bar, double dt_s, double over, CharacterBody& body); // the whole pose, one share
+    std::array<double, 4> limb_ratios(const LimbSample& sample, const LimbBars& bars, double dt_s) const;
+    // The limbs over their bar held back on their own; false when that leaves one over `whole_pose_bars` (the trunk
+    // carries it too fast).
+    bool hold_limbs(const LimbBars& bars, const LimbBars& whole_pose_bars, double dt_s, const std::array<double, 4>& asked_ratios,
+                    CharacterBody& body);
+    void hold_pose(const LimbBars& bars, double dt_s, double over, CharacterBody& body); // the whole pose, one share
 
     std::shared_ptr<const LibrarySpeeds> m_library;
     bool m_has_last = false;
@@ -64,6 +71,7 @@ private:
     std::array<long long, k_move_kind_count> m_held_frames{};
     double m_largest_lag_m = 0.0;
     std::array<double, 4> m_shown_share{1.0, 1.0, 1.0, 1.0};
+    unsigned m_library_held = 0u; // this frame: the limbs held back to the library's bar
     std::vector<std::vector<int>> m_limb_of_joint; // [character][joint]: 0-3 (LimbSample's order), -1 the trunk
 };
 

@@ -91,6 +91,10 @@ struct FighterSettings {
     // Blocks at human speed (issue 44) with human_speed off: the blocking arm alone held to the library's block
     // speeds (a synthesized block seen late moved its wrist at up to 24 m/s); the rest of the body as asked.
     bool human_speed_blocks = true;
+    // No wrist or ankle shown faster than a person's (k_human_extremity_mps, 12 m/s; issue 44) with human_speed off:
+    // a strike captured faster, or sped up towards a real one's speed with its offset added, lags and lands later
+    // (its speed at contact at most that); a turn or lunge that carries a hand too fast holds the whole pose.
+    bool human_extremities = true;
     // Hit reactions (issue 44): a user strike that lands on the head or chest moves the fighter's head and trunk the
     // way it pushes, from the database's captured hit reactions (hit_reactions.h), blended in over
     // `reaction_blend_s`, then back to the guard. A strike under way is played out first. The blend is as long as the
