@@ -40,7 +40,7 @@ const CommandSpec& play_spec() {
         "play",
         "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:HEAD[,LEFT,RIGHT]] | replay:FILE | simulate:KIND|FILE] "
         "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] "
-        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--max-speedup RATIO] [--human-speed] [--superhuman-blocks] [--superhuman-extremities] [--no-hit-reactions] [--rest-in-reach] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
+        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--max-speedup RATIO] [--human-speed] [--superhuman-blocks] [--superhuman-extremities] [--drop-guard] [--no-hit-reactions] [--rest-in-reach] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
         "Runs the fighter at 60 Hz against the user's head and hands (a DTrack system, a replayed CSV, or a\n"
         "simulated user) and the supervisor's commands, one per line: punch [left|right] [straight|hook|uppercut]\n"
         "[low|middle|high], kick [left|right] [front|roundhouse|side] [low|middle|high], slash [left|right] [low|middle|high],\n"
@@ -88,6 +88,8 @@ const CommandSpec& play_spec() {
                                   "block the fist leaves too little time for arrives late)"},
          {"superhuman-extremities", "", "wrists and ankles are not held to a person's 12 m/s (default: they are; a strike that asks for more lags\n"
                                        "and lands later, its speed at contact at most that)"},
+         {"drop-guard", "", "while striking, the free arm moves as its clip has it (a kata's punch pulls the other hand to the hip;\n"
+                           "default: it stays where the guard had it, covering the face)"},
          {"no-hit-reactions", "", "a user strike that lands does not move the fighter (default: a captured hit reaction, the way the blow pushed)"},
          {"no-defence", "", "the fighter does not block or slip the user's strikes (also the command 'defence on|off', the viewer's D key)"},
          {"captured-blocks", "", "block punches with the database's captured blocks when one fits: rising at the head, rising or downward at\n"
@@ -225,6 +227,7 @@ int run_play(int argc, char** argv) {
     options.plans_per_frame = static_cast<int>(*plans_per_frame);
     options.fighter.aim = aim;
     options.fighter.defence.enabled = !arguments.has("no-defence");
+    options.fighter.defence.keep_guard = !arguments.has("drop-guard");
     options.fighter.human_speed = arguments.has("human-speed");
     options.fighter.hit_reactions = !arguments.has("no-hit-reactions");
     options.fighter.human_speed_blocks = !arguments.has("superhuman-blocks");

@@ -114,7 +114,7 @@ void Fighter::plan(double t_s) {
 void Fighter::play_strike(double t_s) {
     Parts& p = *m_parts;
     p.strike.play(t_s, p.body, p.user);
-    p.defence.apply(t_s, true, p.player.pins(), p.body); // a block with the free arm
+    p.defence.apply(t_s, std::max(0, p.strike.segment()), p.player.pins(), p.body); // a block with the free arm
     show(t_s);
     if (m_settings.human_speed || m_settings.human_extremities) p.strike.held_back(p.speed_limit.shown_share(limb_of_segment(static_cast<BodyPart>(std::max(0, p.strike.segment())))));
     p.strike.measure(t_s, p.body, p.user, p.log); // the contact as shown
@@ -158,7 +158,7 @@ void Fighter::move(double t_s) {
     }
     // A blow is answered over its own blend (the reaction's); everything else over the fighter's.
     p.player.play(t_s, p.body, m_state == FighterState::hit_reaction ? m_settings.reaction_blend_s : m_settings.blend_s);
-    p.defence.apply(t_s, false, p.player.pins(), p.body);
+    p.defence.apply(t_s, -1, p.player.pins(), p.body);
     show(t_s);
 }
 

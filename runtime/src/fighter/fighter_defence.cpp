@@ -11,9 +11,17 @@
 #include <cmath>
 
 namespace kumite {
+namespace {
+
+constexpr double k_cover_hold_s = 0.2; // a strike's free arm kept in the guard this long after it (the recovery's blend)
+constexpr double k_cover_mps = 3.0;    // how fast the guard's pull moves a wrist on top of its own motion
+
+} // namespace
 
 void FighterDefence::reset() {
     m_defence.reset();
+    m_guard_known = false; // another body, or one the tracker lost: its guard is seen again first
+    m_cover_weight = {0.0, 0.0};
     m_block_arm.forget_lag(); // the last arm shown was another body's, or held still
 }
 
@@ -47,6 +55,13 @@ void FighterDefence::defend(double t_s, double shown_s, const UserHands& hands, 
     } else if (state == FighterState::hold) {
         allowed = Defence::Allowed{{false, false}, false};
     }
+    // The guard's arms as last shown (resting or stepping, no move on): where a strike keeps its free arm.
+    if ((state == FighterState::rest || state == FighterState::approach) && !m_defence.active() && m_cover_weight[0] <= 0.0 &&
+               m_cover_weight[1] <= 0.0) {
+        const Eigen::Vector3d zero = defender.heading.to_heading(Eigen::Vector3d::Zero());
+        for (int arm = 0; arm < 2; ++arm) m_guard_wrist_from_head[arm] = defender.heading.to_heading(defender.wrist[arm] - defender.head) - zero;
+        m_guard_known = true;
+    }
     m_block_arm.measure_from_shown(m_defence, defender, shown_s);
     m_landed = false;
     m_defence.update(t_s, hands, defender, allowed);
@@ -71,7 +86,10 @@ void FighterDefence::defend(double t_s, double shown_s, const UserHands& hands, 
     m_defence.clear_events();
 }
 
-void FighterDefence::apply(double now_s, bool striking, const LimbPins& pins_shown, CharacterBody& body) {
+void FighterDefence::apply(double now_s, int striking_segment, const LimbPins& pins_shown, CharacterBody& body) {
+    const bool striking = striking_segment >= 0;
+    const int striking_limb = striking ? limb_of_segment(static_cast<BodyPart>(striking_segment)) : -1;
+    const int striking_arm = striking_limb == int(Limb::arm_l) ? 0 : striking_limb == int(Limb::arm_r) ? 1 : -1;
     m_shown = false;
     m_arm_to_note = -1;
     const double block = m_defence.block_weight(), slip = m_defence.slip_weight();
@@ -79,7 +97,17 @@ void FighterDefence::apply(double now_s, bool striking, const LimbPins& pins_sho
     // it goes on there at that speed (not in one frame), unless the fighter strikes or moves again.
     const bool lagging = m_block_arm.lagging() && m_defence.move() == DefenceMove::none && !striking;
     m_block_arm.forget_lag();
-    if (block <= 0.0 && slip <= 0.0 && !lagging) return;
+    // The guard kept: each free arm goes to (or stays at) the guard while striking and a little after.
+    const double dt_s = std::clamp(now_s - m_last_apply_s, 0.0, 0.1);
+    m_last_apply_s = now_s;
+    std::array<bool, 2> cover_goal{};
+    for (int arm = 0; arm < 2; ++arm) {
+        const bool covering = m_defence.settings().keep_guard && striking && m_guard_known && arm != striking_arm;
+        if (covering) m_cover_end_s[arm] = now_s;
+        cover_goal[arm] = covering || (m_cover_weight[arm] > 0.0 && now_s - m_cover_end_s[arm] < k_cover_hold_s);
+    }
+    const bool cover = cover_goal[0] || cover_goal[1] || m_cover_weight[0] > 0.0 || m_cover_weight[1] > 0.0;
+    if (block <= 0.0 && slip <= 0.0 && !lagging && !cover) return;
     CharacterBody::Rig& rig = body.current();
     const RestAnatomy& anatomy = rig.rig->anatomy();
     // The undefended pose: the shown decode, or a strike's adapted frame (decoded again from its MIR frame, for the
@@ -147,6 +175,30 @@ void FighterDefence::apply(double now_s, bool striking, const LimbPins& pins_sho
         // as strikes keep their clip's bends, so it cannot flip.
         m_defended_frame.swivel[block_limb] = swivel_keeping_bend(before[block_chain.root], asked, bends[block_side],
                                                                   limb_swivel_reference(m_defended_frame, block_limb), m_defended_frame.swivel[block_limb]);
+    }
+    // The guard kept: a free arm's wrist where the guard had it from the head (the head as the strike moves it).
+    for (int arm = 0; arm < 2 && cover; ++arm) {
+        if ((block > 0.0 || lagging) && arm == block_side) { // the block has the arm: the cover starts again after it
+            m_cover_weight[arm] = 0.0;
+            continue;
+        }
+        if (!cover_goal[arm] && m_cover_weight[arm] <= 0.0) continue;
+        const int limb = arm == 0 ? int(Limb::arm_l) : int(Limb::arm_r);
+        const LimbChain& chain = anatomy.limbs[limb];
+        const Eigen::Vector3d head = before[anatomy.body_map.joint(BodyPart::head)];
+        const Eigen::Vector3d zero = body.heading().to_world(Eigen::Vector3d::Zero());
+        const Eigen::Vector3d guard_wrist = head + body.heading().to_world(m_guard_wrist_from_head[arm]) - zero;
+        const Eigen::Vector3d natural = rig.decoder.limb_targets()[limb];
+        // The weight moves towards its goal no faster than carries the wrist k_cover_mps off the arm's own way: an
+        // arm already in the guard (a strike's start) is kept there at once, one a block left elsewhere comes back.
+        const double step = dt_s * k_cover_mps / std::max((guard_wrist - natural).norm(), 1e-6);
+        m_cover_weight[arm] = std::clamp(m_cover_weight[arm] + std::clamp((cover_goal[arm] ? 1.0 : 0.0) - m_cover_weight[arm], -step, step), 0.0, 1.0);
+        if (m_cover_weight[arm] <= 0.0) continue;
+        pins.pinned[limb] = false;
+        pins.extremity_offset_world[limb] = m_cover_weight[arm] * (guard_wrist - natural);
+        // The elbow keeps the strike's own bend, as a block's does.
+        m_defended_frame.swivel[limb] = swivel_keeping_bend(before[chain.root], natural + pins.extremity_offset_world[limb], bends[arm],
+                                                            limb_swivel_reference(m_defended_frame, limb), m_defended_frame.swivel[limb]);
     }
     body.decode(m_defended_frame, pins);
     // What is shown, for a recording (shown_mir()): the body's MIR frame stays the undefended one the next blend starts from.

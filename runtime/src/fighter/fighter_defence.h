@@ -5,7 +5,8 @@
 // hand's course or playing a captured block, a slip's lean) decoded over the pose shown, measured (joint limits,
 // feet). Owns: the Defence, the captured block's arm, the edited frame and what it shows, the edits' measures since
 // the last user strike, the blow that landed this frame. Touches: the body (the pose shown), the event log
-// (user_strike, user_strike_end).
+// (user_strike, user_strike_end). While the fighter strikes, the arms the strike leaves free are kept where the
+// guard had them from the head (a kata's pulled-back hand, a swinging arm: the face is covered as a boxer's is).
 
 #include "fighter/captured_block_arm.h"
 #include "fighter/character_body.h"
@@ -35,7 +36,7 @@ public:
     const UserStrikeEvent& landed_strike() const { return m_landed_strike; }
     // After the body moved (the clip played, with the feet's `pins`, or the strike's adapted frame): the move's
     // edits decoded over the pose shown, when one is on.
-    void apply(double now_s, bool striking, const LimbPins& pins, CharacterBody& body);
+    void apply(double now_s, int striking_segment, const LimbPins& pins, CharacterBody& body);
     // After the speed limit: the blocking arm's speed as shown, for the block's event (when apply() edited one).
     void note_shown_arm(double now_s, const CharacterBody& body);
 
@@ -60,6 +61,13 @@ private:
     double m_foot_shift_m = 0.0;         // how far they moved a foot, since then
     int m_arm_to_note = -1;              // the limb apply() moved as a block this frame (its speed is noted as shown)
     bool m_landed = false;               // a user strike landed this frame
+    // The guard kept while striking (DefenceSettings::keep_guard): each arm's wrist from the head (heading axes) in
+    // the guard as last shown, and each arm's weight towards it (1 while striking and k_cover_hold_s after).
+    std::array<Eigen::Vector3d, 2> m_guard_wrist_from_head{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+    bool m_guard_known = false;
+    std::array<double, 2> m_cover_weight{0.0, 0.0};
+    std::array<double, 2> m_cover_end_s{0.0, 0.0};
+    double m_last_apply_s = 0.0;
     UserStrikeEvent m_landed_strike;
 };
 
