@@ -4,16 +4,19 @@
 
 namespace kumite {
 
-Eigen::Vector3d HeadingFrame::to_heading(const Eigen::Vector3d& world) const {
+Eigen::Vector3d HeadingFrame::to_heading(const Eigen::Vector3d& world) const { return direction_to_heading(world - origin); }
+
+Eigen::Vector3d HeadingFrame::to_world(const Eigen::Vector3d& h) const { return origin + direction_to_world(h); }
+
+Eigen::Vector3d HeadingFrame::direction_to_heading(const Eigen::Vector3d& d) const {
     // Undo the yaw: rotate by -yaw about Y.
-    const Eigen::Vector3d d = world - origin;
     const double c = std::cos(yaw_rad), s = std::sin(yaw_rad);
     return {c * d.x() - s * d.z(), d.y(), s * d.x() + c * d.z()};
 }
 
-Eigen::Vector3d HeadingFrame::to_world(const Eigen::Vector3d& h) const {
+Eigen::Vector3d HeadingFrame::direction_to_world(const Eigen::Vector3d& h) const {
     const double c = std::cos(yaw_rad), s = std::sin(yaw_rad);
-    return origin + Eigen::Vector3d(c * h.x() + s * h.z(), h.y(), -s * h.x() + c * h.z());
+    return {c * h.x() + s * h.z(), h.y(), -s * h.x() + c * h.z()};
 }
 
 HeadingFrame heading_frame_from(const Eigen::Vector3d& pelvis_position, const Eigen::Vector3d& facing, double floor_y) {

@@ -75,7 +75,7 @@ void Fighter::take_blow(double t_s) {
     if (!m_blow_pending || m_state == FighterState::strike) return;
     m_blow_pending = false;
     const HeadingFrame heading = p.body.heading();
-    const Eigen::Vector3d push_in_heading = heading.to_heading(heading.origin + m_blow.hand_velocity) - heading.to_heading(heading.origin);
+    const Eigen::Vector3d push_in_heading = heading.direction_to_heading(m_blow.hand_velocity);
     const HitReactions::Choice choice = p.reactions.choose(push_in_heading, m_blow.at_head);
     FighterEvent event = EventLog::at(FighterEvent::Type::hit_reaction, t_s);
     event.user_strike = m_blow;
@@ -114,7 +114,7 @@ void Fighter::plan(double t_s) {
 void Fighter::play_strike(double t_s) {
     Parts& p = *m_parts;
     p.strike.play(t_s, p.body, p.user);
-    p.defence.apply(t_s, std::max(0, p.strike.segment()), p.player.pins(), p.body); // a block with the free arm
+    p.defence.apply(t_s, std::max(0, p.strike.segment()), p.player.pins(), p.body); // a block or the guard kept with the free arm
     show(t_s);
     if (m_settings.human_speed || m_settings.human_extremities) p.strike.held_back(p.speed_limit.shown_share(limb_of_segment(static_cast<BodyPart>(std::max(0, p.strike.segment())))));
     p.strike.measure(t_s, p.body, p.user, p.log); // the contact as shown

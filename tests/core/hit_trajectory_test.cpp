@@ -13,6 +13,10 @@ TEST_CASE("heading_frame: facing +X puts the heading's +Z on world +X", "[core]"
     CHECK_THAT(frame.to_heading(Eigen::Vector3d(1.0, 1.5, 2.5)), is_near(Eigen::Vector3d(-0.5, 1.5, 0.0), 1e-12));
     const Eigen::Vector3d p(-0.3, 0.4, 7.0);
     CHECK_THAT(frame.to_world(frame.to_heading(p)), is_near(p, 1e-12));
+    // A direction turns without the origin: the difference of two points, each taken across.
+    const Eigen::Vector3d q(2.0, -1.0, 0.5);
+    CHECK_THAT(frame.direction_to_heading(p - q), is_near(frame.to_heading(p) - frame.to_heading(q), 1e-12));
+    CHECK_THAT(frame.direction_to_world(Eigen::Vector3d(0, 0, 1)), is_near(Eigen::Vector3d(1.0, 0.0, 0.0), 1e-12));
 }
 
 TEST_CASE("hit_trajectory: a right kick rises in front of its start poses, inside its box", "[core][corpus]") {

@@ -36,8 +36,8 @@ std::vector<StrikeHands> punching(bool keep_guard, int& strikes, int& hits) {
     bool striking = false;
     int ordered = 0;
     auto from_head = [&](BodyPart hand) {
-        const HeadingFrame& heading = bout.fighter->heading();
-        return Eigen::Vector3d(heading.to_heading(bout.fighter->part_position(hand)) - heading.to_heading(bout.fighter->part_position(BodyPart::head)));
+        const HeadingFrame heading = bout.fighter->heading();
+        return heading.direction_to_heading(bout.fighter->part_position(hand) - bout.fighter->part_position(BodyPart::head));
     };
     auto close = [&] {
         out.push_back({std::min(moved[0], moved[1]), std::max(moved[0], moved[1])});

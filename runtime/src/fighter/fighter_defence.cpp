@@ -57,9 +57,8 @@ void FighterDefence::defend(double t_s, double shown_s, const UserHands& hands, 
     }
     // The guard's arms as last shown (resting or stepping, no move on): where a strike keeps its free arm.
     if ((state == FighterState::rest || state == FighterState::approach) && !m_defence.active() && m_cover_weight[0] <= 0.0 &&
-               m_cover_weight[1] <= 0.0) {
-        const Eigen::Vector3d zero = defender.heading.to_heading(Eigen::Vector3d::Zero());
-        for (int arm = 0; arm < 2; ++arm) m_guard_wrist_from_head[arm] = defender.heading.to_heading(defender.wrist[arm] - defender.head) - zero;
+        m_cover_weight[1] <= 0.0) {
+        for (int arm = 0; arm < 2; ++arm) m_guard_wrist_from_head[arm] = defender.heading.direction_to_heading(defender.wrist[arm] - defender.head);
         m_guard_known = true;
     }
     m_block_arm.measure_from_shown(m_defence, defender, shown_s);
@@ -177,7 +176,7 @@ void FighterDefence::apply(double now_s, int striking_segment, const LimbPins& p
                                                                   limb_swivel_reference(m_defended_frame, block_limb), m_defended_frame.swivel[block_limb]);
     }
     // The guard kept: a free arm's wrist where the guard had it from the head (the head as the strike moves it).
-    for (int arm = 0; arm < 2 && cover; ++arm) {
+    for (int arm = 0; arm < 2; ++arm) {
         if ((block > 0.0 || lagging) && arm == block_side) { // the block has the arm: the cover starts again after it
             m_cover_weight[arm] = 0.0;
             continue;
@@ -186,8 +185,7 @@ void FighterDefence::apply(double now_s, int striking_segment, const LimbPins& p
         const int limb = arm == 0 ? int(Limb::arm_l) : int(Limb::arm_r);
         const LimbChain& chain = anatomy.limbs[limb];
         const Eigen::Vector3d head = before[anatomy.body_map.joint(BodyPart::head)];
-        const Eigen::Vector3d zero = body.heading().to_world(Eigen::Vector3d::Zero());
-        const Eigen::Vector3d guard_wrist = head + body.heading().to_world(m_guard_wrist_from_head[arm]) - zero;
+        const Eigen::Vector3d guard_wrist = head + body.heading().direction_to_world(m_guard_wrist_from_head[arm]);
         const Eigen::Vector3d natural = rig.decoder.limb_targets()[limb];
         // The weight moves towards its goal no faster than carries the wrist k_cover_mps off the arm's own way: an
         // arm already in the guard (a strike's start) is kept there at once, one a block left elsewhere comes back.

@@ -34,8 +34,9 @@ public:
     // A user strike landed on the head or chest in this frame's defend() (the last one, when both hands did).
     bool landed() const { return m_landed; }
     const UserStrikeEvent& landed_strike() const { return m_landed_strike; }
-    // After the body moved (the clip played, with the feet's `pins`, or the strike's adapted frame): the move's
-    // edits decoded over the pose shown, when one is on.
+    // After the body moved (the clip played, with the feet's `pins`, or the strike's adapted frame of the body part
+    // `striking_segment`, -1 when not striking): the move's edits and the guard kept decoded over the pose shown, when
+    // either is on.
     void apply(double now_s, int striking_segment, const LimbPins& pins, CharacterBody& body);
     // After the speed limit: the blocking arm's speed as shown, for the block's event (when apply() edited one).
     void note_shown_arm(double now_s, const CharacterBody& body);

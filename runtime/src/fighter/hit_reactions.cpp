@@ -35,7 +35,7 @@ HitReactions::HitReactions(const MotionDatabaseView& db, const CharacterRig& mea
             const auto positions = decoder.model_positions();
             if (f == 0) heading = pose_heading(skeleton, anatomy, positions, decoder.model_rotations());
             // The head relative to the hips, in the heading's axes at the impact.
-            const Eigen::Vector3d head_on_hips = heading.to_heading(positions[head]) - heading.to_heading(positions[pelvis]);
+            const Eigen::Vector3d head_on_hips = heading.direction_to_heading(positions[head] - positions[pelvis]);
             if (f == 0) start = head_on_hips;
             if ((head_on_hips - start).norm() > largest.norm()) largest = head_on_hips - start;
         }

@@ -12,6 +12,9 @@ struct HeadingFrame {
 
     Eigen::Vector3d to_heading(const Eigen::Vector3d& world) const;
     Eigen::Vector3d to_world(const Eigen::Vector3d& in_heading) const;
+    // An offset or a velocity (not a point): turned about Y only, the origin left out.
+    Eigen::Vector3d direction_to_heading(const Eigen::Vector3d& world) const;
+    Eigen::Vector3d direction_to_world(const Eigen::Vector3d& in_heading) const;
 };
 
 // From the pelvis position and the world direction the body faces (any vector with a horizontal part).
