@@ -31,7 +31,7 @@ std::vector<StrikeHands> punching(bool keep_guard, int& strikes, int& hits) {
     Bout bout(reference_database()->view(), "brawler", settings);
     const Eigen::Vector3d head(0.0, 1.6, 1.5);
     std::vector<StrikeHands> out;
-    std::array<Eigen::Vector3d, 2> start{};
+    std::array<Eigen::Vector3d, 2> start{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
     std::array<double, 2> moved{};
     bool striking = false;
     int ordered = 0;
