@@ -40,7 +40,7 @@ const CommandSpec& play_spec() {
         "play",
         "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:HEAD[,LEFT,RIGHT]] | replay:FILE | simulate:KIND|FILE] "
         "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] "
-        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--max-speedup RATIO] [--human-speed] [--superhuman-blocks] [--superhuman-extremities] [--drop-guard] [--no-hit-reactions] [--rest-in-reach] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
+        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--max-speedup RATIO] [--human-speed] [--superhuman-moves] [--superhuman-blocks] [--superhuman-extremities] [--drop-guard] [--no-hit-reactions] [--rest-in-reach] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
         "Runs the fighter at 60 Hz against the user's head and hands (a DTrack system, a replayed CSV, or a\n"
         "simulated user) and the supervisor's commands, one per line: punch [left|right] [straight|hook|uppercut]\n"
         "[low|middle|high], kick [left|right] [front|roundhouse|side] [low|middle|high], slash [left|right] [low|middle|high],\n"
@@ -84,8 +84,11 @@ const CommandSpec& play_spec() {
                              "never over 12 m/s): a move that asks for more is shown lagging (the report's motion.by_move held_back_frames)"},
          {"rest-in-reach", "", "between strikes the fighter rests where its strikes reach (as the paper's); default: just out of reach\n"
                                "(0.8-1.2 leg lengths from the user's head), stepping in to strike and out after"},
+         {"superhuman-moves", "", "steps, the guard, slips, recoveries, hit reactions and the limbs a strike leaves free are not held to\n"
+                                 "the library's speeds for their kind (default: they are, as with --human-speed; only the striking limb's\n"
+                                 "elbow or knee is free); blocks still are"},
          {"superhuman-blocks", "", "a block's arm is not held to the library's block speeds (default: it is, as with --human-speed; a\n"
-                                  "block the fist leaves too little time for arrives late)"},
+                                  "block the fist leaves too little time for arrives late; implies --superhuman-moves)"},
          {"superhuman-extremities", "", "wrists and ankles are not held to a person's 12 m/s (default: they are; a strike that asks for more lags\n"
                                        "and lands later, its speed at contact at most that)"},
          {"drop-guard", "", "while striking, the free arm moves as its clip has it (a kata's punch pulls the other hand to the hip;\n"
@@ -231,6 +234,7 @@ int run_play(int argc, char** argv) {
     options.fighter.human_speed = arguments.has("human-speed");
     options.fighter.hit_reactions = !arguments.has("no-hit-reactions");
     options.fighter.human_speed_blocks = !arguments.has("superhuman-blocks");
+    options.fighter.human_speed_but_strikes = !arguments.has("superhuman-moves") && !arguments.has("superhuman-blocks");
     options.fighter.human_extremities = !arguments.has("superhuman-extremities");
     options.fighter.keep_distance = !arguments.has("rest-in-reach");
     options.fighter.defence.captured_blocks = arguments.has("captured-blocks");

@@ -116,7 +116,7 @@ void Fighter::play_strike(double t_s) {
     p.strike.play(t_s, p.body, p.user);
     p.defence.apply(t_s, std::max(0, p.strike.segment()), p.player.pins(), p.body); // a block or the guard kept with the free arm
     show(t_s);
-    if (m_settings.human_speed || m_settings.human_extremities) p.strike.held_back(p.speed_limit.shown_share(limb_of_segment(static_cast<BodyPart>(std::max(0, p.strike.segment())))));
+    if (m_settings.human_speed || m_settings.human_speed_but_strikes || m_settings.human_extremities) p.strike.held_back(p.speed_limit.shown_share(limb_of_segment(static_cast<BodyPart>(std::max(0, p.strike.segment())))));
     p.strike.measure(t_s, p.body, p.user, p.log); // the contact as shown
     if (!p.strike.over()) return;
     p.strike.end(t_s, p.log);
@@ -166,18 +166,23 @@ void Fighter::show(double t_s) {
     Parts& p = *m_parts;
     const MoveKind kind = MotionMeter::move_kind(*this, p.db);
     if (m_settings.human_speed) p.speed_limit.apply(t_s, kind, p.body);
-    else if (m_settings.human_speed_blocks || m_settings.human_extremities) { // noted every frame: the last pose shown
-        // The blocking arm held to the library's block speeds, and an arm still behind the pose asked for after its
-        // block (a blow landed, the move cancelled): it catches up at the speeds of what comes next instead of in
-        // one frame. Every other wrist and ankle no faster than a person's.
+    else if (m_settings.human_speed_but_strikes || m_settings.human_speed_blocks || m_settings.human_extremities) { // noted every frame
+        // Every limb but a strike's own held to the library's speeds for the kind of move; else the blocking arm, and
+        // an arm still behind the pose asked for after its block (a blow landed, the move cancelled): it catches up
+        // at the speeds of what comes next instead of in one frame. Every other wrist and ankle no faster than a
+        // person's.
         unsigned limbs = 0u;
-        if (m_settings.human_speed_blocks) {
+        if (m_settings.human_speed_but_strikes) {
+            limbs = SpeedLimit::k_all_limbs;
+            if (is_strike_kind(kind)) limbs &= ~(1u << limb_of_segment(static_cast<BodyPart>(std::max(0, p.strike.segment()))));
+        } else if (m_settings.human_speed_blocks) {
             if (kind == MoveKind::block) limbs |= 1u << p.defence.defence().block_arm();
             for (int arm = 0; arm < 2; ++arm) if (p.speed_limit.held_to_library(arm)) limbs |= 1u << arm;
         }
         p.speed_limit.apply(t_s, kind, p.body, limbs, m_settings.human_extremities);
     }
-    if ((m_settings.human_speed || m_settings.human_speed_blocks || m_settings.human_extremities) && p.speed_limit.held()) p.defence.shown_held(p.body);
+    if ((m_settings.human_speed || m_settings.human_speed_but_strikes || m_settings.human_speed_blocks || m_settings.human_extremities) && p.speed_limit.held())
+        p.defence.shown_held(p.body);
     p.defence.note_shown_arm(t_s, p.body);
     p.body.update_heading();
 }

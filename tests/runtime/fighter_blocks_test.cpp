@@ -35,6 +35,7 @@ TEST_CASE("fighter: captured blocks against recorded boxers put the forearm on t
         FighterSettings settings;
         settings.defence.captured_blocks = true;
         settings.human_speed_blocks = false; // the clips' own geometry, at the speed the ramp asks (issue 26's bars)
+        settings.human_speed_but_strikes = false;
         Bout b(content->view(), character, settings);
         for (int frame = 0; frame < int(std::min(40.0, user->duration_s()) * 60.0); ++frame) {
             b.step_against_capture(*user, frame);

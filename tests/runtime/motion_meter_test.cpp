@@ -158,11 +158,7 @@ namespace {
 // 30 s against a user who punches at the fighter and walks, with orders of punches and kicks: blocks against fists
 // that leave little time (the synthesized block's arm was asked for 20-80 rad/s at the elbow), strikes, recoveries,
 // steps. The meter of the bout, and the frames the fighter's speed limit held back.
-MotionMeter punching_bout(const MotionDatabaseView& db, bool human_speed, long long& held, bool human_speed_blocks = true) {
-    FighterSettings settings;
-    settings.human_speed = human_speed;
-    settings.human_speed_blocks = human_speed_blocks;
-    settings.human_extremities = human_speed_blocks; // superhuman blocks here: nothing held at all
+MotionMeter punching_bout(const MotionDatabaseView& db, const FighterSettings& settings, long long& held) {
     kumite::test::Bout bout(db, "brawler", settings);
     MotionMeter meter(1);
     SimulatedUser user(SimulatedKind::punch, 7);
@@ -184,7 +180,9 @@ TEST_CASE("fighter: no joint moves faster than the library's fastest for its kin
     const MotionDatabaseContent* content = kumite::test::reference_database();
     if (!content) return;
     long long held = 0;
-    const MotionMeter meter = punching_bout(content->view(), true, held);
+    FighterSettings human;
+    human.human_speed = true;
+    const MotionMeter meter = punching_bout(content->view(), human, held);
     const kumite::test::StandingCharacter brawler("brawler", content->view());
     const auto library = library_joint_speeds(content->view(), brawler.skeleton(), brawler.anatomy);
     for (int k = 0; k < k_move_kind_count; ++k) {
@@ -205,16 +203,42 @@ TEST_CASE("fighter: no joint moves faster than the library's fastest for its kin
     // Without the limit, blocks and wrists included (--superhuman-blocks --superhuman-extremities), the same bout goes
     // over: the block's arm.
     long long held_free = 0;
-    const MotionMeter free_meter = punching_bout(content->view(), false, held_free, false);
+    FighterSettings free;
+    free.human_speed_blocks = free.human_extremities = free.human_speed_but_strikes = false; // nothing held at all
+    const MotionMeter free_meter = punching_bout(content->view(), free, held_free);
     CHECK(held_free == 0);
     CHECK(free_meter.fastest_overall().wrist_mps > k_human_extremity_mps);
 
-    // The defaults: the blocking arm alone held to the block's bar, the rest as asked (within a person's wrist
-    // speed here too since the blends, the offset ramp and the trunk's lean no longer jump).
+    // The defaults: every move but a strike's own limb held to its kind's bar (blocks, slips, steps, recoveries, the
+    // guard; a punch's legs, a kick's arms); the striking limb's wrist or ankle held to a person's, its elbow or knee
+    // free.
+    long long held_default = 0;
+    const MotionMeter default_meter = punching_bout(content->view(), FighterSettings{}, held_default);
+    CHECK(held_default > 0);
+    for (int k = 0; k < k_move_kind_count; ++k) {
+        CAPTURE(move_kind_name(MoveKind(k)));
+        const JointSpeeds bar = speed_bar(library, MoveKind(k));
+        const JointSpeeds& fastest = default_meter.fastest()[std::size_t(k)];
+        const bool punch = MoveKind(k) == MoveKind::punch || MoveKind(k) == MoveKind::elbow, kick = MoveKind(k) == MoveKind::kick || MoveKind(k) == MoveKind::knee;
+        if (!punch) CHECK(fastest.wrist_mps <= 1.002 * bar.wrist_mps);
+        if (!punch) CHECK(fastest.elbow_radps <= 1.002 * bar.elbow_radps + 1e-9);
+        if (!kick) CHECK(fastest.ankle_mps <= 1.002 * bar.ankle_mps);
+        if (!kick) CHECK(fastest.knee_radps <= 1.002 * bar.knee_radps + 1e-9);
+        CHECK(fastest.wrist_mps <= 1.002 * k_human_extremity_mps);
+        CHECK(fastest.ankle_mps <= 1.002 * k_human_extremity_mps);
+    }
+    // Only the blocking arm held (--superhuman-moves): the steps' and recoveries' knees, the blocks' legs went over.
+    FighterSettings blocks_only;
+    blocks_only.human_speed_but_strikes = false;
     long long held_blocks = 0;
-    const MotionMeter default_meter = punching_bout(content->view(), false, held_blocks);
-    CHECK(held_blocks > 0);
-    CHECK(default_meter.fastest()[int(MoveKind::block)].wrist_mps <= 1.002 * speed_bar(library, MoveKind::block).wrist_mps);
+    const MotionMeter blocks_meter = punching_bout(content->view(), blocks_only, held_blocks);
+    bool over = false;
+    for (const MoveKind kind : {MoveKind::step, MoveKind::block, MoveKind::slip, MoveKind::recover, MoveKind::guard}) {
+        const JointSpeeds bar = speed_bar(library, kind), fastest = blocks_meter.fastest()[int(kind)];
+        over = over || fastest.knee_radps > 1.01 * bar.knee_radps || fastest.ankle_mps > 1.01 * bar.ankle_mps || fastest.elbow_radps > 1.01 * bar.elbow_radps;
+    }
+    CHECK(over);
+    CHECK(blocks_meter.fastest()[int(MoveKind::block)].wrist_mps <= 1.002 * speed_bar(library, MoveKind::block).wrist_mps);
 }
 
 TEST_CASE("fighter: held to human speed, strikes land later instead of short, and the limbs under their bar are not held",

@@ -95,6 +95,12 @@ struct FighterSettings {
     // a strike captured faster, or sped up towards a real one's speed with its offset added, lags and lands later
     // (its speed at contact at most that); a turn or lunge that carries a hand too fast holds the whole pose.
     bool human_extremities = true;
+    // Every move but a strike's own limb at human speed (issue 44) with human_speed off: every joint held to the
+    // library's fastest for its kind of move — steps, the guard, blocks, slips, recoveries, hit reactions, and the
+    // limbs a strike leaves free — except the striking limb, whose wrist or ankle is held to a person's
+    // (human_extremities) and whose elbow or knee is free: held to the library's, a punch's elbow (straightening
+    // at the contact) lands at 4 m/s instead of 5.6. Off: only the blocking arm (human_speed_blocks).
+    bool human_speed_but_strikes = true;
     // Hit reactions (issue 44): a user strike that lands on the head or chest moves the fighter's head and trunk the
     // way it pushes, from the database's captured hit reactions (hit_reactions.h), blended in over
     // `reaction_blend_s`, then back to the guard. A strike under way is played out first. The blend is as long as the

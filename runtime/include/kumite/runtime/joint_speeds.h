@@ -27,6 +27,9 @@ inline constexpr int k_move_kind_count = 11;
 const char* move_kind_name(MoveKind kind);
 // The kind of strike a segment strikes with (hand: punch, foot: kick, knee, elbow).
 MoveKind strike_move_kind(BodyPart segment);
+inline bool is_strike_kind(MoveKind kind) {
+    return kind == MoveKind::punch || kind == MoveKind::kick || kind == MoveKind::knee || kind == MoveKind::elbow;
+}
 
 struct JointSpeeds {
     double wrist_mps = 0.0, ankle_mps = 0.0, elbow_radps = 0.0, knee_radps = 0.0;
