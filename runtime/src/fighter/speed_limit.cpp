@@ -122,6 +122,29 @@ bool SpeedLimit::hold_limbs(const LimbBars& bars, const LimbBars& whole_pose_bar
     return *std::max_element(ratios.begin(), ratios.end()) <= 1.0;
 }
 
+void SpeedLimit::release_limbs(const LimbBars& whole_pose_bars, double dt_s, CharacterBody& body) {
+    const std::vector<int>& limb_of_joint = m_limb_of_joint[std::size_t(body.index())];
+    const RestAnatomy& anatomy = body.anatomy();
+    // Each held limb eased from its share towards the asked pose by one common part `eased` (1: as asked, under the
+    // bars, known): the least that brings every limb under them, by halving.
+    const std::array<double, 4> held = m_shown_share;
+    auto ease = [&](double eased) {
+        std::array<double, 4> share{};
+        for (std::size_t k = 0; k < 4; ++k) share[k] = held[k] + eased * (1.0 - held[k]);
+        blend_limbs(body.pose(), m_last, m_asked, limb_of_joint, share);
+        body.show_edited_pose();
+        m_shown_share = share;
+    };
+    double under = 1.0, over = 0.0;
+    for (int refine = 0; refine < 10; ++refine) {
+        const double eased = 0.5 * (under + over);
+        ease(eased);
+        const std::array<double, 4> ratios = limb_ratios(LimbSample::of(anatomy, body.positions()), whole_pose_bars, dt_s);
+        (*std::max_element(ratios.begin(), ratios.end()) <= 1.0 ? under : over) = eased;
+    }
+    ease(under);
+}
+
 void SpeedLimit::hold_pose(const LimbBars& bars, double dt_s, double over, CharacterBody& body) {
     const RestAnatomy& anatomy = body.anatomy();
     // Part of the way: the share that brings the fastest joint to its bar; the one found under the bar is shown.
@@ -172,6 +195,10 @@ void SpeedLimit::apply(double t_s, MoveKind kind, CharacterBody& body, unsigned 
                 if (whole_over > 1.0) {
                     body.pose() = m_asked;
                     hold_pose(whole_pose_bars, dt_s, whole_over, body);
+                } else {
+                    // The asked pose is under them: a limb held on a turning trunk swung wider than asked (an arm
+                    // kept straight where the clip folds it in). It is held only as far as keeps it under them.
+                    release_limbs(whole_pose_bars, dt_s, body);
                 }
             }
             for (std::size_t k = 0; k < 4; ++k) {

@@ -60,6 +60,9 @@ private:
     bool hold_limbs(const LimbBars& bars, const LimbBars& whole_pose_bars, double dt_s, const std::array<double, 4>& asked_ratios,
                     CharacterBody& body);
     void hold_pose(const LimbBars& bars, double dt_s, double over, CharacterBody& body); // the whole pose, one share
+    // The limbs held by hold_limbs eased back towards the asked pose (itself under `whole_pose_bars`) as far as
+    // brings them under those bars.
+    void release_limbs(const LimbBars& whole_pose_bars, double dt_s, CharacterBody& body);
 
     std::shared_ptr<const LibrarySpeeds> m_library;
     bool m_has_last = false;
