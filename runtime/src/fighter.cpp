@@ -147,12 +147,13 @@ void Fighter::move(double t_s) {
     const double distance = p.user.distance_from(p.body.heading().origin);
     const Footwork::Band band = p.orders.has_pending() ? p.footwork.strike_band(p.body, p.user, p.orders.pending().tried ? distance : -1.0)
                                                        : p.footwork.rest_band(p.body, p.user);
+    const Footwork::UserRange range = Footwork::range_of(p.body, p.user);
     const bool out_of_range = m_state == FighterState::rest && p.user.tracking() && t_s - m_state_since_s >= m_settings.blend_s &&
-                              (distance > band.far_m || distance < band.near_m);
+                              p.footwork.out_of_band(range, band);
     if (p.player.over(t_s) || out_of_range) {
         if (m_state == FighterState::approach) enter(FighterState::rest, t_s);
         // At each loop of the guard: step into the band, or keep guarding, facing the user.
-        const Footwork::Next next = p.footwork.next_clip(m_state == FighterState::rest && p.user.tracking(), distance, band, leg);
+        const Footwork::Next next = p.footwork.next_clip(m_state == FighterState::rest && p.user.tracking(), range, band, leg);
         if (next.is_step) enter(FighterState::approach, t_s);
         p.player.start(next.clip, t_s, p.body.mir(), p.user.facing(p.body.heading()), leg, next.step_scale, next.is_step);
     }

@@ -10,7 +10,7 @@ namespace kumite {
 Footwork::Footwork(const MotionDatabaseView& db, const FighterSettings& settings)
     : m_db(db), m_near_legs(settings.near_legs), m_far_legs(settings.far_legs), m_landing_in_band(settings.landing_in_band),
       m_min_step_scale(settings.min_step_scale), m_keep_distance(settings.keep_distance), m_rest_near_legs(settings.rest_near_legs),
-      m_rest_far_legs(settings.rest_far_legs), m_reach_fallback(settings.reach_fallback) {
+      m_rest_far_legs(settings.rest_far_legs), m_reach_fallback(settings.reach_fallback), m_lead_user(settings.steps_lead_user) {
     m_guard_clip = db_first_clip_of(db, "rest");
     if (m_guard_clip < 0) m_guard_clip = 0; // a database without a guard: its first clip stands in
     const char* steps[] = {"step_forward", "step_back", "step_left", "step_right"};
@@ -24,6 +24,26 @@ double Footwork::stride_m(int clip, double leg_length) const {
     const DbMirFrame& last = m_db.mir_frames[c.first_pose + c.frame_count - 1];
     const double dx = last.hip_centre[0] - first.hip_centre[0], dz = last.hip_centre[2] - first.hip_centre[2];
     return std::hypot(dx, dz) * leg_length;
+}
+
+double Footwork::duration_s(int clip) const {
+    return clip >= 0 ? (m_db.clips[clip].frame_count - 1) * double(m_db.meta.frame_time_s) : 0.0;
+}
+
+Footwork::UserRange Footwork::range_of(const CharacterBody& body, const TrackedUser& user) {
+    Eigen::Vector3d to_user = user.head() - body.heading().origin;
+    to_user.y() = 0.0;
+    const Eigen::Vector3d velocity = user.motion().velocity();
+    const bool walking = user.motion().settled() && velocity.norm() >= k_walking_mps && to_user.norm() > 1e-6;
+    return {user.distance_from(body.heading().origin), walking ? velocity.dot(to_user.normalized()) : 0.0};
+}
+
+double Footwork::distance_at_landing(int clip, const UserRange& user) const {
+    return m_lead_user ? user.distance_m + user.receding_mps * duration_s(clip) : user.distance_m;
+}
+
+bool Footwork::out_of_band(const UserRange& user, const Band& band) const {
+    return distance_at_landing(m_step_clips[0], user) > band.far_m || distance_at_landing(m_step_clips[1], user) < band.near_m;
 }
 
 double Footwork::far_m(const CharacterBody& body, const TrackedUser& user) const {
@@ -49,13 +69,19 @@ Footwork::Band Footwork::rest_band(const CharacterBody& body, const TrackedUser&
     return {near, std::max(m_rest_far_legs * leg, near + k_min_band_legs * leg), 0.5};
 }
 
-Footwork::Next Footwork::next_clip(bool resting_with_user, double distance, const Band& band, double leg_length) const {
+Footwork::Next Footwork::next_clip(bool resting_with_user, const UserRange& user, const Band& band, double leg_length) const {
     Next next{m_guard_clip, 1.0, false};
     if (!resting_with_user) return next;
     const double near = band.near_m, far = band.far_m;
     const double middle = near + band.landing * (far - near);
-    if (distance > far && m_step_clips[0] >= 0) next.clip = m_step_clips[0];
-    else if (distance < near && m_step_clips[1] >= 0) next.clip = m_step_clips[1];
+    double distance = user.distance_m;
+    if (const double ahead = distance_at_landing(m_step_clips[0], user); ahead > far && m_step_clips[0] >= 0) {
+        next.clip = m_step_clips[0];
+        distance = ahead;
+    } else if (const double behind = distance_at_landing(m_step_clips[1], user); behind < near && m_step_clips[1] >= 0) {
+        next.clip = m_step_clips[1];
+        distance = behind;
+    }
     if (next.clip != m_guard_clip) {
         const double stride = stride_m(next.clip, leg_length);
         if (stride > 1e-3) next.step_scale = std::clamp(std::abs(distance - middle) / stride, m_min_step_scale, 1.0);

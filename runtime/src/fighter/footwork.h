@@ -21,8 +21,9 @@ public:
 
     int guard_clip() const { return m_guard_clip; }
     int step_forward_clip() const { return m_step_clips[0]; }
-    // How far a clip moves the hips, on a character of `leg_length`.
+    // How far a clip moves the hips, on a character of `leg_length`, and how long it plays.
     double stride_m(int clip, double leg_length) const;
+    double duration_s(int clip) const;
 
     // The band where strikes reach: from near_legs leg lengths to the arms' reach (strike_aim.h), at most far_legs;
     // a quarter leg wide at least, so a shortened step lands inside it. Without a tracked user, the settings' band.
@@ -42,15 +43,30 @@ public:
     // rest_far_legs (a quarter leg wide at least); landing in its middle. With keep_distance off, the strike band.
     Band rest_band(const CharacterBody& body, const TrackedUser& user) const;
 
+    // The user's head from the fighter on the floor: `distance_m` now, and how fast it moves away (`receding_mps`,
+    // its horizontal velocity along the line between them; negative: coming closer).
+    struct UserRange {
+        double distance_m = 0.0;
+        double receding_mps = 0.0;
+    };
+    // The user's range from the body; receding only on a settled course at a walking pace (a boxer's bob back and
+    // forth, the drift of a guard, are not followed ahead).
+    static UserRange range_of(const CharacterBody& body, const TrackedUser& user);
+    static constexpr double k_walking_mps = 0.3; // the slowest walk
+    // Where the user will be when a step of `clip` lands (with steps_lead_user), else where the user is.
+    double distance_at_landing(int clip, const UserRange& user) const;
+    // Whether a step forward or back is due: the user will be beyond the band's far end when a step forward lands,
+    // or inside its near end when a step back does.
+    bool out_of_band(const UserRange& user, const Band& band) const;
     // The clip after the one that ended (or when the fighter rests out of the band): a step into `band`, shortened
-    // to land where the band says, when the fighter rests with a user tracked `distance` away out of the band; else
-    // the guard.
+    // to land where the band says for where the user will be then, when the fighter rests with a user tracked out
+    // of the band; else the guard.
     struct Next {
         int clip = -1;
         double step_scale = 1.0;
         bool is_step = false; // a step (the fighter approaches), not the guard
     };
-    Next next_clip(bool resting_with_user, double distance, const Band& band, double leg_length) const;
+    Next next_clip(bool resting_with_user, const UserRange& user, const Band& band, double leg_length) const;
 
 private:
     const MotionDatabaseView& m_db;
@@ -60,6 +76,7 @@ private:
     bool m_keep_distance;
     double m_rest_near_legs, m_rest_far_legs;
     bool m_reach_fallback;
+    bool m_lead_user; // steps sized for where the user will be when they land
 };
 
 } // namespace kumite

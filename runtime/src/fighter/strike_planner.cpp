@@ -67,7 +67,7 @@ StrikePlanner::Outcome StrikePlanner::plan(double t_s, FighterAim aim, bool appr
         const double closer_m = footwork.near_m(body.leg_length()) + Footwork::k_min_band_legs * body.leg_length();
         const bool closer_helps = approaching || (step >= 0 && distance > std::min(closer_m, footwork.far_m(body, user)));
         // ... and when steps at the step clip's pace can close the gap in the time left to wait.
-        const double step_s = step >= 0 ? (m_db.clips[step].frame_count - 1) * double(m_db.meta.frame_time_s) : 0.0;
+        const double step_s = footwork.duration_s(step);
         const double step_speed_mps = step_s > 0.0 ? footwork.stride_m(step, body.leg_length()) / step_s : 0.0;
         const double time_left_s = m_wait_for_reach_s - (t_s - pending.since_s);
         const bool in_time = distance - footwork.far_m(body, user) < step_speed_mps * time_left_s;

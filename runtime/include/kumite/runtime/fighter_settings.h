@@ -49,6 +49,13 @@ struct FighterSettings {
     double rest_near_legs = 0.8;
     double rest_far_legs = 1.2;
     double min_step_scale = 0.15;    // the shortest step, as a fraction of the clip's
+    // A step is sized for where the user's head will be when it lands: its horizontal velocity along the line to
+    // the fighter over the step clip's length, while the head keeps a settled course (a user walking away at 0.7 m/s
+    // is a step clip's second, 0.7 m, further by then; a boxer bobbing back and forth is not followed ahead). Off
+    // (the default): for where the head is. On, recorded walkers' orders were performed 95% of the time instead of
+    // 88%, but simulated walkers that turn at random were hit less (93 / 89% at 0.8 / 1.0 m/s instead of 96 / 92%):
+    // a step sized for a course that turns lands too far (README, issue 44's table).
+    bool steps_lead_user = false;
     double blend_s = 0.2;
     double recover_s = 0.3;
     double start_x_m = 0.0;          // where the fighter starts on the floor: x, facing +Z (side by side)
