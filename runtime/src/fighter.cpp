@@ -8,6 +8,12 @@
 #include "kumite/runtime/motion_meter.h"
 
 namespace kumite {
+namespace {
+
+// The limb (LimbSample's order) a strike strikes with.
+int striking_limb(const Strike& strike) { return limb_of_segment(static_cast<BodyPart>(std::max(0, strike.segment()))); }
+
+} // namespace
 
 Fighter::Fighter(const MotionDatabaseView& database, const Retriever& retriever, std::vector<CharacterRig*> characters, FighterSettings settings,
                  std::shared_ptr<const LibrarySpeeds> library_speeds)
@@ -116,7 +122,7 @@ void Fighter::play_strike(double t_s) {
     p.strike.play(t_s, p.body, p.user);
     p.defence.apply(t_s, std::max(0, p.strike.segment()), p.player.pins(), p.body); // a block or the guard kept with the free arm
     show(t_s);
-    if (m_settings.human_speed || m_settings.human_speed_but_strikes || m_settings.human_extremities) p.strike.held_back(p.speed_limit.shown_share(limb_of_segment(static_cast<BodyPart>(std::max(0, p.strike.segment())))));
+    if (m_settings.human_speed || m_settings.human_speed_but_strikes || m_settings.human_extremities) p.strike.held_back(p.speed_limit.shown_share(striking_limb(p.strike)));
     p.strike.measure(t_s, p.body, p.user, p.log); // the contact as shown
     if (!p.strike.over()) return;
     p.strike.end(t_s, p.log);
@@ -144,10 +150,9 @@ void Fighter::move(double t_s) {
     // The band where strikes reach while an order waits (closer still when no strike reached from in it: an elbow,
     // a knee), else the fighting distance; resting out of it, the fighter steps without waiting for the guard loop.
     const double leg = p.body.leg_length();
-    const double distance = p.user.distance_from(p.body.heading().origin);
-    const Footwork::Band band = p.orders.has_pending() ? p.footwork.strike_band(p.body, p.user, p.orders.pending().tried ? distance : -1.0)
-                                                       : p.footwork.rest_band(p.body, p.user);
     const Footwork::UserRange range = Footwork::range_of(p.body, p.user);
+    const Footwork::Band band = p.orders.has_pending() ? p.footwork.strike_band(p.body, p.user, p.orders.pending().tried ? range.distance_m : -1.0)
+                                                       : p.footwork.rest_band(p.body, p.user);
     const bool out_of_range = m_state == FighterState::rest && p.user.tracking() && t_s - m_state_since_s >= m_settings.blend_s &&
                               p.footwork.out_of_band(range, band);
     if (p.player.over(t_s) || out_of_range) {
@@ -166,8 +171,9 @@ void Fighter::move(double t_s) {
 void Fighter::show(double t_s) {
     Parts& p = *m_parts;
     const MoveKind kind = MotionMeter::move_kind(*this, p.db);
+    const bool in_part = m_settings.human_speed_but_strikes || m_settings.human_speed_blocks || m_settings.human_extremities;
     if (m_settings.human_speed) p.speed_limit.apply(t_s, kind, p.body);
-    else if (m_settings.human_speed_but_strikes || m_settings.human_speed_blocks || m_settings.human_extremities) { // noted every frame
+    else if (in_part) { // noted every frame
         // Every limb but a strike's own held to the library's speeds for the kind of move; else the blocking arm, and
         // an arm still behind the pose asked for after its block (a blow landed, the move cancelled): it catches up
         // at the speeds of what comes next instead of in one frame. Every other wrist and ankle no faster than a
@@ -175,15 +181,14 @@ void Fighter::show(double t_s) {
         unsigned limbs = 0u;
         if (m_settings.human_speed_but_strikes) {
             limbs = SpeedLimit::k_all_limbs;
-            if (is_strike_kind(kind)) limbs &= ~(1u << limb_of_segment(static_cast<BodyPart>(std::max(0, p.strike.segment()))));
+            if (is_strike_kind(kind)) limbs &= ~(1u << striking_limb(p.strike));
         } else if (m_settings.human_speed_blocks) {
             if (kind == MoveKind::block) limbs |= 1u << p.defence.defence().block_arm();
             for (int arm = 0; arm < 2; ++arm) if (p.speed_limit.held_to_library(arm)) limbs |= 1u << arm;
         }
         p.speed_limit.apply(t_s, kind, p.body, limbs, m_settings.human_extremities);
     }
-    if ((m_settings.human_speed || m_settings.human_speed_but_strikes || m_settings.human_speed_blocks || m_settings.human_extremities) && p.speed_limit.held())
-        p.defence.shown_held(p.body);
+    if ((m_settings.human_speed || in_part) && p.speed_limit.held()) p.defence.shown_held(p.body);
     p.defence.note_shown_arm(t_s, p.body);
     p.body.update_heading();
 }
