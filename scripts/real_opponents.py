@@ -98,6 +98,7 @@ def main():
                          "user_seen": user["seen"], "blocked": user["blocked"], "slipped": user["slipped"],
                          "blocks": user["blocks"], "slips": user.get("slips", 0), "block_clips": user.get("block_clips", 0),
                          "landed": user["hit_by_user"], "user_missed": user["missed"],
+                         "by_fighter_state": user.get("by_fighter_state", {}),
                          "joint_limit_violations": report["joint_limit_violations"] + user["joint_limit_violations"],
                          "defence_foot_shift_m": user["foot_shift_m"],
                          "contact_speeds": report["contact_speeds"],
@@ -163,6 +164,19 @@ def main():
     medians = [row["motion"]["distance_between_strikes"]["median_legs"] for row in rows if row["motion"].get("distance_between_strikes", {}).get("frames")]
     overall["distance_between_strikes_legs"] = {"median_of_bouts": statistics.median(medians) if medians else None, "bouts": len(medians)}
     overall["overshoot_max_m"] = max((row["overshoot_max_m"] for row in rows), default=0.0)
+    # Where the blows that land get through: by what the fighter was doing when each ended.
+    by_state = {}
+    for row in rows:
+        for state, counts in row["by_fighter_state"].items():
+            total = by_state.setdefault(state, {"would_land": 0, "defended": 0, "landed": 0})
+            total["defended"] += counts["blocked"] + counts["slipped"]
+            total["landed"] += counts["hit_by_user"]
+            total["would_land"] += counts["blocked"] + counts["slipped"] + counts["hit_by_user"]
+    for total in by_state.values():
+        total["defended_rate"] = rate(total["defended"], total["would_land"])
+    overall["defended_by_fighter_state"] = by_state
+    print("defended, by what the fighter was doing: " + ", ".join(
+        f"{state} {fmt(t['defended'], t['would_land'])}" for state, t in sorted(by_state.items()) if t["would_land"]), file=sys.stderr)
     speeds = ", ".join(f"{kind} {v['median']:.1f} m/s ({v['count']})" for kind, v in overall["speed_at_contact_mps"].items())
     print(f"speed at contact (median): {speeds}; distance between strikes (median of bouts) "
           f"{overall['distance_between_strikes_legs']['median_of_bouts'] or 0:.2f} legs; overshoot max {overall['overshoot_max_m'] * 100:.1f} cm",

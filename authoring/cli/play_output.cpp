@@ -83,6 +83,13 @@ nlohmann::json play_report_json(const Bout& bout) {
                 counters.user_outcomes_by_target[target][static_cast<int>(outcome)];
         }
     }
+    nlohmann::json by_fighter_state = nlohmann::json::object();
+    for (int state = 0; state < k_fighter_state_count; ++state) {
+        for (UserStrikeOutcome outcome : {UserStrikeOutcome::blocked, UserStrikeOutcome::slipped, UserStrikeOutcome::hit_by_user, UserStrikeOutcome::missed}) {
+            by_fighter_state[fighter_state_name(static_cast<FighterState>(state))][user_strike_outcome_name(outcome)] =
+                counters.user_outcomes_by_fighter_state[std::size_t(state)][static_cast<int>(outcome)];
+        }
+    }
     // Strikes and hits by what the clips are (semantics, kind, height, side), and how many clips were used.
     nlohmann::json by_kind = nlohmann::json::object();
     int clips_used = 0;
@@ -140,7 +147,8 @@ nlohmann::json play_report_json(const Bout& bout) {
               {"block_clip_speed_ratio", quantiles_of(counters.block_clip_speed_ratio)},
               {"joint_limit_violations", counters.defence_joint_limit_violations},
               {"foot_shift_m", counters.defence_foot_shift_m},
-              {"by_target", by_target}}},
+              {"by_target", by_target},
+              {"by_fighter_state", by_fighter_state}}},
             {"hit_reactions",
              {{"count", counters.hit_reactions}, {"captured", counters.captured_hit_reactions}, {"blows_answered", counters.hit_reaction_blows},
               {"angle_to_blow_deg", quantiles_of(counters.hit_reaction_angle_deg)}, {"delay_s", quantiles_of(counters.hit_reaction_delay_s)}}}};

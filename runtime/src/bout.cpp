@@ -59,6 +59,7 @@ Result<std::unique_ptr<Bout>> Bout::create(const MotionDatabaseView& database, s
     }
     bout->m_events.reserve(std::size_t(options.fighters) * 64);
     bout->m_order_frame.assign(std::size_t(options.fighters), -1);
+    bout->m_fighter_state.assign(std::size_t(options.fighters), FighterState::rest);
     for (auto& fighter : bout->m_fighters) bout->m_fighter_pointers.push_back(fighter.get());
     bout->m_planning = std::make_unique<PlanningBudget>(options.plans_per_frame, bout->m_fighters.size());
     bout->m_queued.reserve(16);
@@ -189,6 +190,7 @@ void Bout::step(double t_s) {
             case FighterEvent::Type::order_performed: ++m_counters.orders_performed; break;
             case FighterEvent::Type::order_expired: ++m_counters.orders_expired; break;
             case FighterEvent::Type::state:
+                m_fighter_state[f] = event.state;
                 if (event.state == FighterState::strike && m_order_frame[f] >= 0) {
                     m_counters.command_to_strike_frames.add(double(frame - m_order_frame[f]));
                     m_order_frame[f] = -1;
@@ -229,6 +231,7 @@ void Bout::step(double t_s) {
                 case UserStrikeOutcome::missed: ++m_counters.user_missed; break;
                 }
                 ++m_counters.user_outcomes_by_target[event.user_strike.at_head ? 0 : 1][static_cast<int>(event.user_strike.outcome)];
+                ++m_counters.user_outcomes_by_fighter_state[static_cast<std::size_t>(m_fighter_state[f])][static_cast<int>(event.user_strike.outcome)];
                 if (event.user_strike.forearm_to_path_m >= 0.0) m_counters.forearm_to_path_m.add(event.user_strike.forearm_to_path_m);
                 if (const UserStrikeEvent& block = event.user_strike; block.arm_speed_mps >= 0.0) {
                     if (block.move == DefenceMove::synthesized) m_counters.synthesized_arm_speed_mps.add(block.arm_speed_mps);

@@ -42,12 +42,16 @@ TEST_CASE("cli: report and play --html draw the bout's events, counts equal to t
 
     // What the events say.
     std::map<std::string, long long> types, outcomes, arm_speeds;
+    std::map<std::string, std::map<std::string, long long>> outcomes_by_state; // the fighter's state as its events say
+    std::string state = "rest";
     std::map<std::string, double> fastest_arm;
     long long hits = 0, targets = 0;
     std::istringstream lines(read_text(folder / "bout.jsonl"));
     for (std::string line; std::getline(lines, line);) {
         const nlohmann::json event = nlohmann::json::parse(line);
         ++types[event["type"].get<std::string>()];
+        if (event["type"] == "state") state = event["state"].get<std::string>();
+        if (event["type"] == "user_strike_end") ++outcomes_by_state[state][event["outcome"].get<std::string>()];
         if (event["type"] == "strike") hits += event["result"] == "hit", targets += event.contains("target");
         if (event["type"] == "user_strike_end") ++outcomes[event["outcome"].get<std::string>()];
         if (event["type"] == "user_strike_end" && event.contains("arm_speed_mps")) {
@@ -68,6 +72,25 @@ TEST_CASE("cli: report and play --html draw the bout's events, counts equal to t
     CHECK(speeds["synthesized"]["max"].get<double>() == Approx(fastest_arm["synthesized"]));
     CHECK(speeds["block_clip"]["count"].get<long long>() == arm_speeds["block_clip"]);
     CHECK(report["user_strikes"]["block_clip_speed_ratio"]["count"].get<long long>() == arm_speeds["block_clip"]);
+
+    // The user's strikes by what the fighter was doing when each ended: as the events say, summing to the outcomes;
+    // this bout (a boxer shadow boxing, orders every 1.5 s) has blows ending while it strikes and while it does not.
+    {
+        const nlohmann::json& by_state = report["user_strikes"]["by_fighter_state"];
+        std::map<std::string, long long> summed;
+        long long while_striking = 0, otherwise = 0;
+        for (const auto& [name, entry] : by_state.items()) {
+            for (const auto& [outcome, count] : entry.items()) {
+                INFO(name << " " << outcome);
+                CHECK(count.get<long long>() == outcomes_by_state[name][outcome]);
+                summed[outcome] += count.get<long long>();
+                (name == "strike" ? while_striking : otherwise) += count.get<long long>();
+            }
+        }
+        for (const char* outcome : {"blocked", "slipped", "hit_by_user", "missed"}) CHECK(summed[outcome] == outcomes[outcome]);
+        CHECK(while_striking > 0);
+        CHECK(otherwise > 0);
+    }
 
     // The motion (issue 44): frames by move kind summing to the bout's, the strikes' speeds at contact by kind
     // equal to the events', the same object in the report and the bout_end line, drawn on both pages.

@@ -69,6 +69,9 @@ struct BoutCounters {
     long long user_strikes = 0, blocked = 0, slipped = 0, hit_by_user = 0, user_missed = 0, blocks = 0, slips = 0;
     long long block_clips = 0; // of the blocks, captured ones (block_clips.h); the rest synthesized
     std::array<std::array<long long, 4>, 2> user_outcomes_by_target{}; // [head, chest][UserStrikeOutcome]
+    // ... by what the fighter was doing when each ended (FighterState: resting, stepping, striking, in a hit
+    // reaction): where the blows that land get through (issue 44: its own strikes and hit reactions, mostly).
+    std::array<std::array<long long, 4>, k_fighter_state_count> user_outcomes_by_fighter_state{};
     ValueHistogram forearm_to_path_m{1e-4, 10.0};
     // Per block, the fastest the blocking wrist or elbow moved relative to the shoulder while the fist came: captured
     // and synthesized blocks, and a captured one's against the same move in its clip (no pop: at most 1).
@@ -156,6 +159,7 @@ private:
     std::vector<std::string> m_queued; // lines from command()
     std::vector<BoutEvent> m_events;
     std::vector<long long> m_order_frame;
+    std::vector<FighterState> m_fighter_state; // each fighter's, as its state events say
     BoutCounters m_counters;
     std::unique_ptr<MotionMeter> m_motion;
     bool m_quit = false;

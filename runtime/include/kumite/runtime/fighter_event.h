@@ -13,6 +13,7 @@
 namespace kumite {
 
 enum class FighterState { rest, approach, strike, recover, hold, hit_reaction };
+inline constexpr int k_fighter_state_count = 6;
 const char* fighter_state_name(FighterState state);
 
 struct FighterEvent {
