@@ -40,7 +40,7 @@ const CommandSpec& play_spec() {
         "play",
         "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:HEAD[,LEFT,RIGHT]] | replay:FILE | simulate:KIND|FILE] "
         "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] "
-        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--max-speedup RATIO] [--human-speed] [--superhuman-moves] [--superhuman-blocks] [--superhuman-extremities] [--drop-guard] [--no-hit-reactions] [--rest-in-reach] [--lead-steps] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
+        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--max-speedup RATIO] [--human-speed] [--superhuman-strikes] [--superhuman-moves] [--superhuman-blocks] [--superhuman-extremities] [--drop-guard] [--no-hit-reactions] [--rest-in-reach] [--lead-steps] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
         "Runs the fighter at 60 Hz against the user's head and hands (a DTrack system, a replayed CSV, or a\n"
         "simulated user) and the supervisor's commands, one per line: punch [left|right] [straight|hook|uppercut]\n"
         "[low|middle|high], kick [left|right] [front|roundhouse|side] [low|middle|high], slash [left|right] [low|middle|high],\n"
@@ -86,9 +86,10 @@ const CommandSpec& play_spec() {
                                "(0.8-1.2 leg lengths from the user's head), stepping in to strike and out after"},
          {"lead-steps", "", "a step is sized for where a walking user's head will be when it lands (a settled course at 0.3 m/s or\n"
                            "more), not where it is: a user who walks away is caught up with (default: off)"},
-         {"superhuman-moves", "", "steps, the guard, slips, recoveries, hit reactions and the limbs a strike leaves free are not held to\n"
-                                 "the library's speeds for their kind (default: they are, as with --human-speed; only the striking limb's\n"
-                                 "elbow or knee is free); blocks still are"},
+         {"superhuman-strikes", "", "a strike's own limb has its elbow or knee free (default: held to the library's fastest for the kind of\n"
+                                   "strike, as every other joint; the strike waits for a fist or foot more than half the hit radius behind)"},
+         {"superhuman-moves", "", "steps, the guard, slips, recoveries, hit reactions and strikes are not held to the library's speeds for\n"
+                                 "their kind (default: they are, as with --human-speed); blocks still are"},
          {"superhuman-blocks", "", "a block's arm is not held to the library's block speeds (default: it is, as with --human-speed; a\n"
                                   "block the fist leaves too little time for arrives late; implies --superhuman-moves)"},
          {"superhuman-extremities", "", "wrists and ankles are not held to a person's 12 m/s (default: they are; a strike that asks for more lags\n"
@@ -237,6 +238,7 @@ int run_play(int argc, char** argv) {
     options.fighter.hit_reactions = !arguments.has("no-hit-reactions");
     options.fighter.human_speed_blocks = !arguments.has("superhuman-blocks");
     options.fighter.human_speed_but_strikes = !arguments.has("superhuman-moves") && !arguments.has("superhuman-blocks");
+    options.fighter.human_speed_strikes = !arguments.has("superhuman-strikes");
     options.fighter.human_extremities = !arguments.has("superhuman-extremities");
     options.fighter.keep_distance = !arguments.has("rest-in-reach");
     options.fighter.steps_lead_user = arguments.has("lead-steps");

@@ -122,7 +122,16 @@ void Fighter::play_strike(double t_s) {
     p.strike.play(t_s, p.body, p.user);
     p.defence.apply(t_s, std::max(0, p.strike.segment()), p.player.pins(), p.body); // a block or the guard kept with the free arm
     show(t_s);
-    if (m_settings.human_speed || m_settings.human_speed_but_strikes || m_settings.human_extremities) p.strike.held_back(p.speed_limit.shown_share(striking_limb(p.strike)));
+    if (m_settings.human_speed || m_settings.human_speed_but_strikes || m_settings.human_extremities) {
+        // A striking limb held back: the strike waits for it (its clock goes back by the share not shown), or, at
+        // the library's speed for its kind, it runs at that speed and the strike waits only for a fist or foot more
+        // than strike_lag_share of the hit radius behind the pose asked for (it lands at the limb's own speed).
+        const int limb = striking_limb(p.strike);
+        const bool runs_at_its_bar = !m_settings.human_speed && m_settings.human_speed_but_strikes && m_settings.human_speed_strikes;
+        if (!runs_at_its_bar || p.speed_limit.lag_m(limb) > m_settings.strike_lag_share * m_settings.hit_radius_m) {
+            p.strike.held_back(p.speed_limit.shown_share(limb));
+        }
+    }
     p.strike.measure(t_s, p.body, p.user, p.log); // the contact as shown
     if (!p.strike.over()) return;
     p.strike.end(t_s, p.log);
@@ -181,7 +190,7 @@ void Fighter::show(double t_s) {
         unsigned limbs = 0u;
         if (m_settings.human_speed_but_strikes) {
             limbs = SpeedLimit::k_all_limbs;
-            if (is_strike_kind(kind)) limbs &= ~(1u << striking_limb(p.strike));
+            if (is_strike_kind(kind) && !m_settings.human_speed_strikes) limbs &= ~(1u << striking_limb(p.strike));
         } else if (m_settings.human_speed_blocks) {
             if (kind == MoveKind::block) limbs |= 1u << p.defence.defence().block_arm();
             for (int arm = 0; arm < 2; ++arm) if (p.speed_limit.held_to_library(arm)) limbs |= 1u << arm;

@@ -166,6 +166,7 @@ void SpeedLimit::apply(double t_s, MoveKind kind, CharacterBody& body, unsigned 
     const RestAnatomy& anatomy = body.anatomy();
     const double dt_s = t_s - m_last_s;
     m_shown_share = {1.0, 1.0, 1.0, 1.0};
+    m_lag_m = {};
     m_library_held = 0u;
     const bool comparable = m_has_last && m_character == body.index() && dt_s > 0.0 && m_library &&
                             body.index() < int(m_library->per_character.size());
@@ -208,7 +209,10 @@ void SpeedLimit::apply(double t_s, MoveKind kind, CharacterBody& body, unsigned 
             body.encode(body.mir());
             ++m_held_frames[int(kind)];
             const LimbSample shown = LimbSample::of(anatomy, body.positions());
-            for (int k = 0; k < 4; ++k) m_largest_lag_m = std::max(m_largest_lag_m, (shown.extremity[k] - asked.extremity[k]).norm());
+            for (int k = 0; k < 4; ++k) {
+                m_lag_m[std::size_t(k)] = (shown.extremity[k] - asked.extremity[k]).norm();
+                m_largest_lag_m = std::max(m_largest_lag_m, m_lag_m[std::size_t(k)]);
+            }
         }
     }
     m_has_last = true;

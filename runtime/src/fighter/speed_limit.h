@@ -44,6 +44,8 @@ public:
     // left behind the pose asked for (m).
     const std::array<long long, k_move_kind_count>& held_frames() const { return m_held_frames; }
     double largest_lag_m() const { return m_largest_lag_m; }
+    // This frame: how far each limb's wrist or ankle was left behind the pose asked for (0: not held).
+    double lag_m(int limb) const { return limb >= 0 && limb < 4 ? m_lag_m[std::size_t(limb)] : 0.0; }
     // The share of the way from the last pose to the asked one this frame showed, per limb (arm l, arm r, leg l,
     // leg r; Limb's order; 1: all of it, not held back).
     double shown_share(int limb) const { return limb >= 0 && limb < 4 ? m_shown_share[std::size_t(limb)] : 1.0; }
@@ -74,6 +76,7 @@ private:
     std::array<long long, k_move_kind_count> m_held_frames{};
     double m_largest_lag_m = 0.0;
     std::array<double, 4> m_shown_share{1.0, 1.0, 1.0, 1.0};
+    std::array<double, 4> m_lag_m{};
     unsigned m_library_held = 0u; // this frame: the limbs held back to the library's bar
     std::vector<std::vector<int>> m_limb_of_joint; // [character][joint]: 0-3 (LimbSample's order), -1 the trunk
 };
