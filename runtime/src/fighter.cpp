@@ -136,6 +136,16 @@ void Fighter::play_strike(double t_s) {
     if (!p.strike.over()) return;
     p.strike.end(t_s, p.log);
     enter(FighterState::recover, t_s);
+    if (m_settings.step_out_after_strikes && p.user.tracking() && !p.orders.has_pending() && !p.orders.has_queued()) {
+        // Out after: a strike that leaves the fighter inside the fighting distance recovers stepping back out.
+        const Footwork::UserRange range = Footwork::range_of(p.body, p.user);
+        const Footwork::Band band = p.footwork.rest_band(p.body, p.user);
+        const Footwork::Next next = p.footwork.next_clip(true, range, band, p.body.leg_length());
+        if (next.is_step && range.distance_m < band.near_m) {
+            p.player.start(next.clip, t_s, p.body.mir(), p.user.facing(p.body.heading()), p.body.leg_length(), next.step_scale, true);
+            return;
+        }
+    }
     p.player.start(p.footwork.guard_clip(), t_s, p.body.mir(), p.body.heading(), p.body.leg_length());
 }
 
@@ -151,7 +161,9 @@ void Fighter::move(double t_s) {
             return;
         }
     } else if (m_state == FighterState::recover && t_s - m_state_since_s >= m_settings.recover_s) {
-        enter(FighterState::rest, t_s);
+        // Recovered: resting, or still stepping out (a step begun with the recovery).
+        const bool stepping = p.player.clip() != p.footwork.guard_clip() && !p.player.over(t_s);
+        enter(stepping ? FighterState::approach : FighterState::rest, t_s);
     } else if (m_state == FighterState::hit_reaction && p.player.over(t_s)) { // back to the guard
         enter(FighterState::recover, t_s);
         p.player.start(p.footwork.guard_clip(), t_s, p.body.mir(), p.user.facing(p.body.heading()), p.body.leg_length());

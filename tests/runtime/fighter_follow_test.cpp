@@ -7,6 +7,7 @@
 #include "support/test_paths.h"
 
 #include "kumite/runtime/capture_user.h"
+#include "kumite/runtime/motion_meter.h"
 
 #include <catch2/catch.hpp>
 
@@ -57,4 +58,52 @@ TEST_CASE("fighter: steps sized for where a walking user will be keep up with re
     // 2026-11-29: 35 performed and 2 expired, against 31 and 5 with steps sized for where the user is.
     CHECK(lead.performed >= 0.9 * (lead.performed + lead.expired));
     CHECK(lead.expired < as_is.expired);
+}
+
+TEST_CASE("fighter: out after a strike, the fighter recovers stepping back to the fighting distance", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = kumite::test::reference_database();
+    if (!content) return;
+    // A still head 1.0 m away, a punch or kick every 3 s (none waiting when a strike ends): the distance kept between
+    // strikes (rest and steps, as the motion meter counts it), and steps begun with a strike's recovery.
+    struct Kept {
+        double median_legs = 0.0;
+        int steps_out = 0, strikes = 0;
+    };
+    auto bout = [&](bool step_out) {
+        FighterSettings settings;
+        settings.step_out_after_strikes = step_out;
+        kumite::test::Bout b(content->view(), "brawler", settings);
+        MotionMeter meter(1);
+        const Eigen::Vector3d head(0.0, 1.6, 1.0);
+        Kept kept;
+        double strike_end_s = -1e9;
+        bool stepped = false;
+        for (int frame = 0; frame < 36 * 60; ++frame) {
+            const double t = frame / 60.0;
+            if (frame >= 60 && frame % 180 == 60) b.fighter->order(b.retriever->semantics_id(frame % 360 == 60 ? "punch" : "kick"), Side::none);
+            b.fighter->step(t, &head);
+            meter.measure(0, t, *b.fighter, b.db, b.brawler.anatomy, &head);
+            for (const FighterEvent& e : b.fighter->events()) {
+                if (e.type == FighterEvent::Type::strike) ++kept.strikes;
+                if (e.type == FighterEvent::Type::strike_end) strike_end_s = e.t_s, stepped = false;
+                // Still recovering, already stepping: the state goes from recover straight to approach.
+                if (e.type == FighterEvent::Type::state && e.state == FighterState::approach && !stepped &&
+                    e.t_s - strike_end_s <= settings.recover_s + 1e-6) {
+                    ++kept.steps_out;
+                    stepped = true;
+                }
+            }
+            b.fighter->clear_events();
+        }
+        kept.median_legs = meter.distance_legs().quantile(0.5);
+        return kept;
+    };
+    const Kept out = bout(true), stay = bout(false);
+    INFO("out after: " << out.steps_out << " steps out of " << out.strikes << " strikes, distance " << out.median_legs
+                       << " legs; staying: " << stay.steps_out << ", " << stay.median_legs << " legs");
+    REQUIRE(out.strikes >= 8);
+    CHECK(out.steps_out >= out.strikes / 2);
+    CHECK(stay.steps_out == 0);
+    CHECK(out.median_legs > stay.median_legs);
+    CHECK(out.median_legs >= FighterSettings{}.rest_near_legs);
 }

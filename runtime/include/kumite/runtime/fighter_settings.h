@@ -48,6 +48,11 @@ struct FighterSettings {
     bool keep_distance = true;
     double rest_near_legs = 0.8;
     double rest_far_legs = 1.2;
+    // Out after a strike (issue 44, "steps in to strike and out after"): with no order waiting, a strike that leaves
+    // the fighter inside the fighting distance recovers stepping back out to it (the step begun with the recovery,
+    // the recovery's speeds while it lasts) instead of guarding where it struck until it has rested. Off: it
+    // recovers where it stands and steps out from its guard.
+    bool step_out_after_strikes = true;
     double min_step_scale = 0.15;    // the shortest step, as a fraction of the clip's
     // A step is sized for where the user's head will be when it lands: its horizontal velocity along the line to
     // the fighter over the step clip's length, while the head keeps a settled course (a user walking away at 0.7 m/s
