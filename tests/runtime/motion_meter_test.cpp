@@ -117,6 +117,8 @@ TEST_CASE("fighter: how long a strike's hit point stays where it stopped, as its
     FighterSettings settings;
     settings.max_speedup = 1.0;
     settings.surface_depth_m = 0.0;
+    settings.step_out_after_strikes = false; // stepping out after each, the next strikes begin from further off and
+                                             // none of them stays a frame either
     kumite::test::Bout bout(content->view(), "brawler", settings);
     const Eigen::Vector3d head(0.0, 1.65, 1.0);
     // Punches and kicks at a still head; after each contact, the frames the hit joint of the pose shown stays within
