@@ -76,19 +76,19 @@ static long long waiting_orders(const Bout& bout) {
 
 nlohmann::json play_report_json(const Bout& bout) {
     const BoutCounters& counters = bout.counters();
-    nlohmann::json by_target;
-    for (int target = 0; target < 2; ++target) {
+    // The user's strikes' outcomes, counted by UserStrikeOutcome, as {blocked, slipped, hit_by_user, missed}.
+    auto outcomes_json = [](const std::array<long long, 4>& counts) {
+        nlohmann::json outcomes;
         for (UserStrikeOutcome outcome : {UserStrikeOutcome::blocked, UserStrikeOutcome::slipped, UserStrikeOutcome::hit_by_user, UserStrikeOutcome::missed}) {
-            by_target[target == 0 ? "head" : "chest"][user_strike_outcome_name(outcome)] =
-                counters.user_outcomes_by_target[target][static_cast<int>(outcome)];
+            outcomes[user_strike_outcome_name(outcome)] = counts[std::size_t(outcome)];
         }
-    }
+        return outcomes;
+    };
+    const nlohmann::json by_target = {{"head", outcomes_json(counters.user_outcomes_by_target[0])},
+                                      {"chest", outcomes_json(counters.user_outcomes_by_target[1])}};
     nlohmann::json by_fighter_state = nlohmann::json::object();
     for (int state = 0; state < k_fighter_state_count; ++state) {
-        for (UserStrikeOutcome outcome : {UserStrikeOutcome::blocked, UserStrikeOutcome::slipped, UserStrikeOutcome::hit_by_user, UserStrikeOutcome::missed}) {
-            by_fighter_state[fighter_state_name(static_cast<FighterState>(state))][user_strike_outcome_name(outcome)] =
-                counters.user_outcomes_by_fighter_state[std::size_t(state)][static_cast<int>(outcome)];
-        }
+        by_fighter_state[fighter_state_name(static_cast<FighterState>(state))] = outcomes_json(counters.user_outcomes_by_fighter_state[std::size_t(state)]);
     }
     // Strikes and hits by what the clips are (semantics, kind, height, side), and how many clips were used.
     nlohmann::json by_kind = nlohmann::json::object();

@@ -117,6 +117,15 @@ void Fighter::plan(double t_s) {
     }
 }
 
+namespace {
+
+// The guard or a step Footwork chose, facing the user; a step with the guard's arms up.
+void start_clip(MotionPlayer& player, CharacterBody& body, const TrackedUser& user, const Footwork::Next& next, double t_s) {
+    player.start(next.clip, t_s, body.mir(), user.facing(body.heading()), body.leg_length(), next.step_scale, next.is_step);
+}
+
+} // namespace
+
 void Fighter::play_strike(double t_s) {
     Parts& p = *m_parts;
     p.strike.play(t_s, p.body, p.user);
@@ -142,7 +151,7 @@ void Fighter::play_strike(double t_s) {
         const Footwork::Band band = p.footwork.rest_band(p.body, p.user);
         const Footwork::Next next = p.footwork.next_clip(true, range, band, p.body.leg_length());
         if (next.is_step && range.distance_m < band.near_m) {
-            p.player.start(next.clip, t_s, p.body.mir(), p.user.facing(p.body.heading()), p.body.leg_length(), next.step_scale, true);
+            start_clip(p.player, p.body, p.user, next, t_s);
             return;
         }
     }
@@ -181,7 +190,7 @@ void Fighter::move(double t_s) {
         // At each loop of the guard: step into the band, or keep guarding, facing the user.
         const Footwork::Next next = p.footwork.next_clip(m_state == FighterState::rest && p.user.tracking(), range, band, leg);
         if (next.is_step) enter(FighterState::approach, t_s);
-        p.player.start(next.clip, t_s, p.body.mir(), p.user.facing(p.body.heading()), leg, next.step_scale, next.is_step);
+        start_clip(p.player, p.body, p.user, next, t_s);
     }
     // A blow is answered over its own blend (the reaction's); everything else over the fighter's.
     p.player.play(t_s, p.body, m_state == FighterState::hit_reaction ? m_settings.reaction_blend_s : m_settings.blend_s);
