@@ -3,7 +3,9 @@
 both hands, 1.2 m in front of the fighter, facing it) for the capture's length, an order every 2 s (punch and kick
 alternately, sides alternating), for each character. Prints a table per opponent x character on stderr and one
 JSON document on stdout: strikes and hits, orders performed / queued / expired / ignored, and the opponent's
-strikes at the fighter (seen, blocked, slipped, landed, missed).
+strikes at the fighter (seen, blocked, slipped, landed, missed). The overall hit and defended rates come with their
+95% Wilson intervals (`hit_rate_ci95`, `defended_rate_ci95`): two settings whose rates differ by less than that may
+differ by chance (the order of blows, a strike a frame later), not by what was changed.
 
   scripts/real_opponents.py [--db DB.kdb] [--opponents GLOB,...] [--characters kid,scout,brawler,runner,giant]
                             [--aim predicted] [--distance 1.2] [--max-seconds 60] [--jobs 2]
@@ -59,6 +61,17 @@ def bout(args, work, opponent, seconds, character):
     result = json.load(open(report))
     result["contact_speeds"] = contact
     return result
+
+
+def wilson_95(successes, trials):
+    """The 95% Wilson interval of a rate: how far two runs' rates may differ by chance alone (the blows and strikes of one
+    run are not independent draws, so it is a lower bound on the spread)."""
+    if not trials:
+        return None
+    z, p = 1.96, successes / trials
+    centre = (p + z * z / (2 * trials)) / (1 + z * z / trials)
+    half = z * ((p * (1 - p) / trials + z * z / (4 * trials * trials)) ** 0.5) / (1 + z * z / trials)
+    return [centre - half, centre + half]
 
 
 def main():
@@ -133,13 +146,17 @@ def main():
     overall["captured_block_share"] = rate(overall["block_clips"], overall["blocks"])
     overall["hit_rate"] = rate(overall["hits"], overall["strikes"])
     overall["defended_rate"] = rate(overall["defended"], overall["would_land"])
+    overall["hit_rate_ci95"] = wilson_95(overall["hits"], overall["strikes"])
+    overall["defended_rate_ci95"] = wilson_95(overall["defended"], overall["would_land"])
     worst_hits = min(per_opponent.items(), key=lambda item: item[1]["hit_rate"] if item[1]["hit_rate"] is not None else 2.0)
     worst_defence = min(per_opponent.items(), key=lambda item: item[1]["defended_rate"] if item[1]["defended_rate"] is not None else 2.0)
     print("per opponent:", file=sys.stderr)
     for opponent, total in per_opponent.items():
         print(f"  {opponent:36s} hits {fmt(total['hits'], total['strikes']):>11s}  defended {fmt(total['defended'], total['would_land']):>11s}",
               file=sys.stderr)
-    print(f"overall: hits {fmt(overall['hits'], overall['strikes'])}, defended {fmt(overall['defended'], overall['would_land'])}, "
+    interval = lambda ci: f" (95% {100 * ci[0]:.0f}-{100 * ci[1]:.0f}%)" if ci else ""
+    print(f"overall: hits {fmt(overall['hits'], overall['strikes'])}{interval(overall['hit_rate_ci95'])}, "
+          f"defended {fmt(overall['defended'], overall['would_land'])}{interval(overall['defended_rate_ci95'])}, "
           f"captured blocks {fmt(overall['block_clips'], overall['blocks'])}; "
           f"worst hits {worst_hits[0]}, worst defence {worst_defence[0]}", file=sys.stderr)
     # Motion (issue 44): speed at contact by kind, the fastest joints by move against the library's, the distance kept.
