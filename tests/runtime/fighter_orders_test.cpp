@@ -80,7 +80,13 @@ TEST_CASE("fighter: orders cycling through kinds and heights strike exactly thos
             ++strikes;
             hits += e.hit;
         }
-        INFO(name << ": " << orders.size() << " orders, " << strikes << " strikes, " << hits << " hits");
+        std::string not_struck; // the orders that expired or were ignored, and why
+        for (const FighterEvent& e : bout.events) {
+            if (e.type == FighterEvent::Type::order_expired || e.type == FighterEvent::Type::ignored_order)
+                not_struck += " [" + std::string(e.semantics >= 0 ? bout.retriever->semantics_name(e.semantics) : "?") + " " + strike_kind_name(e.kind) +
+                              " " + strike_height_name(e.height) + " at " + std::to_string(e.t_s) + " s: " + e.why + "]";
+        }
+        INFO(name << ": " << orders.size() << " orders, " << strikes << " strikes, " << hits << " hits;" << not_struck);
         CHECK(strikes == static_cast<int>(orders.size()));
         CHECK(hits >= 0.9 * strikes);
     }
