@@ -13,6 +13,16 @@ namespace {
 // The limb (LimbSample's order) a strike strikes with.
 int striking_limb(const Strike& strike) { return limb_of_segment(static_cast<BodyPart>(std::max(0, strike.segment()))); }
 
+constexpr double k_crowd_settle_s = 0.1; // a state's first frames blend from the clip before: no step back begun in them
+
+// The user rushed in (FighterSettings::crowd_legs): nearer than `limit_m` while the fighter steps or recovers from a
+// strike (`state`, entered `in_state_s` ago), not already stepping back.
+bool crowded(FighterState state, double in_state_s, bool tracking, bool stepping_back, double limit_m, const Footwork::UserRange& range) {
+    if (!tracking || stepping_back) return false;
+    if (state != FighterState::approach && state != FighterState::recover) return false;
+    return in_state_s >= k_crowd_settle_s && range.distance_m < limit_m;
+}
+
 } // namespace
 
 Fighter::Fighter(const MotionDatabaseView& database, const Retriever& retriever, std::vector<CharacterRig*> characters, FighterSettings settings,
@@ -185,7 +195,17 @@ void Fighter::move(double t_s) {
                                                        : p.footwork.rest_band(p.body, p.user);
     const bool out_of_range = m_state == FighterState::rest && p.user.tracking() && t_s - m_state_since_s >= m_settings.blend_s &&
                               p.footwork.out_of_band(range, band);
-    if (p.player.over(t_s) || out_of_range) {
+    // Rushed: a step back now, from whatever plays (a step in, the recovery's guard), out to the fighting distance;
+    // with an order waiting, only from inside the band its strike starts from (an elbow's, a knee's, closer in).
+    double crowd_m = m_settings.crowd_legs * leg;
+    if (p.orders.has_pending()) crowd_m = std::min(crowd_m, band.near_m);
+    else if (p.orders.has_queued()) crowd_m = std::min(crowd_m, p.footwork.near_m(p.body, p.user));
+    const Footwork::Next evade = crowded(m_state, t_s - m_state_since_s, p.user.tracking(), p.player.clip() == p.footwork.step_back_clip(), crowd_m, range)
+                                     ? p.footwork.next_clip(true, range, p.footwork.rest_band(p.body, p.user), leg)
+                                     : Footwork::Next{};
+    if (evade.is_step && evade.clip == p.footwork.step_back_clip()) {
+        start_clip(p.player, p.body, p.user, evade, t_s);
+    } else if (p.player.over(t_s) || out_of_range) {
         if (m_state == FighterState::approach) enter(FighterState::rest, t_s);
         // At each loop of the guard: step into the band, or keep guarding, facing the user.
         const Footwork::Next next = p.footwork.next_clip(m_state == FighterState::rest && p.user.tracking(), range, band, leg);

@@ -117,8 +117,9 @@ TEST_CASE("fighter: how long a strike's hit point stays where it stopped, as its
     FighterSettings settings;
     settings.max_speedup = 1.0;
     settings.surface_depth_m = 0.0;
-    settings.step_out_after_strikes = false; // stepping out after each, the next strikes begin from further off and
-                                             // none of them stays a frame either
+    settings.step_out_after_strikes = false; // stepping out after each (or stepping back from the head in the
+    settings.crowd_legs = 0.0;               // recovery), the next strikes begin from further off and none of them
+                                             // stays a frame either
     kumite::test::Bout bout(content->view(), "brawler", settings);
     const Eigen::Vector3d head(0.0, 1.65, 1.0);
     // Punches and kicks at a still head; after each contact, the frames the hit joint of the pose shown stays within
@@ -431,6 +432,7 @@ TEST_CASE("fighter: a strike's own limb at the library's speed lands at that spe
     const auto library = library_joint_speeds(content->view(), scout.skeleton(), scout.anatomy);
     FighterSettings held_limb;
     held_limb.step_out_after_strikes = false; // the same footwork in the three bouts: the strikes compared, not the steps
+    held_limb.crowd_legs = 0.0;
     StrikeSpeeds defaults = kata_bout(content->view(), kata, held_limb);
     FighterSettings free_limb = held_limb;
     free_limb.human_speed_strikes = false; // --superhuman-strikes

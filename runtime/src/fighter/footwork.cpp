@@ -8,7 +8,7 @@
 namespace kumite {
 
 Footwork::Footwork(const MotionDatabaseView& db, const FighterSettings& settings)
-    : m_db(db), m_near_legs(settings.near_legs), m_far_legs(settings.far_legs), m_landing_in_band(settings.landing_in_band),
+    : m_db(db), m_near_legs(settings.near_legs), m_close_near_legs(settings.close_near_legs), m_far_legs(settings.far_legs), m_landing_in_band(settings.landing_in_band),
       m_min_step_scale(settings.min_step_scale), m_keep_distance(settings.keep_distance), m_rest_near_legs(settings.rest_near_legs),
       m_rest_far_legs(settings.rest_far_legs), m_reach_fallback(settings.reach_fallback), m_lead_user(settings.steps_lead_user) {
     m_guard_clip = db_first_clip_of(db, "rest");
@@ -46,8 +46,15 @@ bool Footwork::out_of_band(const UserRange& user, const Band& band) const {
     return distance_at_landing(m_step_clips[0], user) > band.far_m || distance_at_landing(m_step_clips[1], user) < band.near_m;
 }
 
+double Footwork::near_m(const CharacterBody& body, const TrackedUser& user) const {
+    const double leg = body.leg_length();
+    // Arms that reach the head from nowhere (a user much taller: strike_reach_m is 0) strike lower, from closer in.
+    const bool head_out_of_reach = user.tracking() && strike_reach_m(body, user.head(), m_reach_fallback) <= 0.0;
+    return head_out_of_reach ? std::min(m_near_legs * leg, close_near_m(leg)) : m_near_legs * leg;
+}
+
 double Footwork::far_m(const CharacterBody& body, const TrackedUser& user) const {
-    const double leg = body.leg_length(), near = near_m(leg);
+    const double leg = body.leg_length(), near = near_m(body, user);
     return user.tracking() ? std::clamp(strike_reach_m(body, user.head(), m_reach_fallback), near + k_min_band_legs * leg, m_far_legs * leg)
                            : m_far_legs * leg;
 }
@@ -55,7 +62,8 @@ double Footwork::far_m(const CharacterBody& body, const TrackedUser& user) const
 Footwork::Band Footwork::strike_band(const CharacterBody& body, const TrackedUser& user, double closer_than_m) const {
     // Land in the far part of the band: in reach, without crowding the user's face.
     const double leg = body.leg_length();
-    Band band{near_m(leg), far_m(body, user), m_landing_in_band};
+    Band band{near_m(body, user), far_m(body, user), m_landing_in_band};
+    if (closer_than_m >= 0.0) band.near_m = std::min(band.near_m, close_near_m(leg));
     if (closer_than_m >= 0.0 && closer_than_m <= band.far_m) {
         band.far_m = std::max(band.near_m + k_min_band_legs * leg, closer_than_m - k_min_band_legs * leg);
     }

@@ -21,21 +21,27 @@ public:
 
     int guard_clip() const { return m_guard_clip; }
     int step_forward_clip() const { return m_step_clips[0]; }
+    int step_back_clip() const { return m_step_clips[1]; }
     // How far a clip moves the hips, on a character of `leg_length`, and how long it plays.
     double stride_m(int clip, double leg_length) const;
     double duration_s(int clip) const;
 
     // The band where strikes reach: from near_legs leg lengths to the arms' reach (strike_aim.h), at most far_legs;
     // a quarter leg wide at least, so a shortened step lands inside it. Without a tracked user, the settings' band.
-    double near_m(double leg_length) const { return m_near_legs * leg_length; }
+    // The near end: near_legs, or close_near_m when the arms reach the user's head from nowhere (a chibi before an
+    // adult: its strikes go lower, from closer in).
+    double near_m(const CharacterBody& body, const TrackedUser& user) const;
+    // The near end for a strike that does not reach from the band (a short one: an elbow, a knee).
+    double close_near_m(double leg_length) const { return m_close_near_legs * leg_length; }
     double far_m(const CharacterBody& body, const TrackedUser& user) const;
 
     // A band and where in it a step lands (0 near, 1 far).
     struct Band {
         double near_m = 0.0, far_m = 0.0, landing = 0.5;
     };
-    // With `closer_than_m` >= 0 (the user's distance, when no strike reached from in the band), its far end comes a
-    // band's least width nearer than that, down to the least width from its near end: a step at a time closer.
+    // With `closer_than_m` >= 0 (the user's distance, when no strike reached from in the band), its near end is
+    // close_near_m and its far end comes a band's least width nearer than that, down to the least width from the near
+    // end: a step at a time closer.
     Band strike_band(const CharacterBody& body, const TrackedUser& user, double closer_than_m = -1.0) const;
     // The least width of a band (leg lengths): a shortened step lands inside it.
     static constexpr double k_min_band_legs = 0.25;
@@ -72,7 +78,7 @@ private:
     const MotionDatabaseView& m_db;
     int m_guard_clip = -1;
     std::array<int, 4> m_step_clips{-1, -1, -1, -1}; // forward, back, left, right
-    double m_near_legs, m_far_legs, m_landing_in_band, m_min_step_scale;
+    double m_near_legs, m_close_near_legs, m_far_legs, m_landing_in_band, m_min_step_scale;
     bool m_keep_distance;
     double m_rest_near_legs, m_rest_far_legs;
     bool m_reach_fallback;

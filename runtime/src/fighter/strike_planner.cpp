@@ -32,9 +32,11 @@ StrikePlanner::Outcome StrikePlanner::plan(double t_s, FighterAim aim, bool appr
     // is changing course (just turned, stopped or started: the extrapolation would be wrong).
     const bool waiting_allowed = t_s - pending.since_s < m_wait_for_reach_s;
     if (aim == FighterAim::predicted && waiting_allowed && user.motion().ready() && !user.motion().settled()) return Outcome::waiting;
-    // A user pressed against the fighter (nearer than the strike band) is not struck from there: it steps back first
-    // (the footwork's step out of the band), as long as the order may wait.
-    if (waiting_allowed && user.tracking() && user.distance_from(body.heading().origin) < footwork.near_m(body.leg_length())) return Outcome::waiting;
+    // A user pressed against the fighter (nearer than the strike band, or than its near end for the shortest strikes
+    // when none reached from the band: an elbow, a knee) is not struck from there: it steps back first (the footwork's
+    // step out of the band), as long as the order may wait.
+    const double near_m = pending.tried ? footwork.close_near_m(body.leg_length()) : footwork.near_m(body, user);
+    if (waiting_allowed && user.tracking() && user.distance_from(body.heading().origin) < near_m) return Outcome::waiting;
     // The first round looks at every part, as many per step as the planning budget lets it (all at once unless many
     // fighters plan in the same frame); while the order waits, one part per frame, in turn from the head down (each
     // look is a retrieval and the adaptation's planning: a hundred fighters waiting at once stay cheap).
@@ -64,7 +66,7 @@ StrikePlanner::Outcome StrikePlanner::plan(double t_s, FighterAim aim, bool appr
         const double distance = user.distance_from(body.heading().origin);
         // (A short strike — an elbow, a knee — may not reach from inside the band either: closer helps while the
         // fighter is not yet at its near end.)
-        const double closer_m = footwork.near_m(body.leg_length()) + Footwork::k_min_band_legs * body.leg_length();
+        const double closer_m = footwork.close_near_m(body.leg_length()) + Footwork::k_min_band_legs * body.leg_length();
         const bool closer_helps = approaching || (step >= 0 && distance > std::min(closer_m, footwork.far_m(body, user)));
         // ... and when steps at the step clip's pace can close the gap in the time left to wait.
         const double step_s = footwork.duration_s(step);
