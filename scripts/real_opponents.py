@@ -8,7 +8,7 @@ strikes at the fighter (seen, blocked, slipped, landed, missed). The overall hit
 differ by chance (the order of blows, a strike a frame later), not by what was changed.
 
   scripts/real_opponents.py [--db DB.kdb] [--opponents GLOB,...] [--characters kid,scout,brawler,runner,giant]
-                            [--aim predicted] [--distance 1.2] [--max-seconds 60] [--jobs 2]
+                            [--aim predicted] [--distance 1.2 | --distance 1.1,1.2,1.3] [--max-seconds 60] [--jobs 2]
 
 Default opponents: ../shared/mocap/cmu14-boxing/box-*.bvh (shadow boxing) and ../shared/mocap/hachaj-kata/*.bvh
 (kata stepping towards the fighter).
@@ -33,8 +33,10 @@ def capture_seconds(kumite, path):
     return info["duration_s"]
 
 
-def bout(args, work, opponent, seconds, character):
+def bout(args, work, opponent, seconds, character, distance):
     name = f"{os.path.basename(os.path.dirname(opponent))}_{os.path.basename(opponent)}_{character}"
+    if len(args.distances) > 1:
+        name += f"_{distance:g}m"
     script = os.path.join(work, name + ".orders")
     with open(script, "w") as out:
         t, n = 1.0, 0
@@ -44,7 +46,7 @@ def bout(args, work, opponent, seconds, character):
             n += 1
     report = os.path.join(work, name + ".json")
     command = [args.kumite, "play"] + ([args.db] if args.db else []) + [
-        "--headless", "--duration", f"{seconds:.3f}", "--tracker", f"capture:{opponent}:{args.distance}", "--character", character,
+        "--headless", "--duration", f"{seconds:.3f}", "--tracker", f"capture:{opponent}:{distance}", "--character", character,
         "--commands", f"script:{script}", "--aim", args.aim, "--seed", "1", "--report", report] + args.play_args.split()
     events = os.path.join(args.events or work, name + ".jsonl")
     command += ["--events", events]
@@ -80,13 +82,18 @@ def main():
     parser.add_argument("--opponents", default=DEFAULT_OPPONENTS, help="comma-separated globs of BVH captures")
     parser.add_argument("--characters", default="kid,scout,brawler,runner,giant")
     parser.add_argument("--aim", default="predicted")
-    parser.add_argument("--distance", type=float, default=1.2)
+    parser.add_argument("--distance", default="1.2", help="metres from the fighter; several, comma-separated (1.1,1.2,1.3): "
+                        "every bout at each, pooled (a single distance's blows move by chance by about ten)")
     parser.add_argument("--max-seconds", type=float, default=60.0, help="bouts last the capture's length, at most this")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     parser.add_argument("--events", default=None, help="a folder to keep each bout's events in")
     parser.add_argument("--kumite", default=os.path.join(root, "build", "bin", "kumite"))
     parser.add_argument("--play-args", default="", help="more arguments for kumite play, e.g. --captured-blocks")
     args = parser.parse_args()
+    try:
+        args.distances = [float(d) for d in args.distance.split(",")]
+    except ValueError:
+        sys.exit(f"real_opponents: --distance takes metres, comma-separated (got {args.distance})")
 
     opponents = sorted(path for pattern in args.opponents.split(",") for path in glob.glob(pattern))
     if not opponents:
@@ -97,14 +104,14 @@ def main():
     rows = []
     with tempfile.TemporaryDirectory() as work, concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         seconds = {opponent: min(args.max_seconds, capture_seconds(args.kumite, opponent)) for opponent in opponents}
-        futures = {(opponent, character): pool.submit(bout, args, work, opponent, seconds[opponent], character)
-                   for opponent in opponents for character in characters}
-        for (opponent, character), future in futures.items():
+        futures = {(opponent, character, distance): pool.submit(bout, args, work, opponent, seconds[opponent], character, distance)
+                   for distance in args.distances for opponent in opponents for character in characters}
+        for (opponent, character, distance), future in futures.items():
             report = future.result()
             user = report["user_strikes"]
             orders = report.get("order_outcomes", {})
             rows.append({"opponent": os.path.relpath(opponent, shared) if opponent.startswith(shared) else opponent,
-                         "character": character, "seconds": seconds[opponent],
+                         "character": character, "distance_m": distance, "seconds": seconds[opponent],
                          "orders": report["orders"], "performed": orders.get("performed", report["strikes"]),
                          "queued": orders.get("queued", 0), "expired": orders.get("expired", 0),
                          "ignored": report["ignored_orders"], "strikes": report["strikes"], "hits": report["hits"],
@@ -202,7 +209,21 @@ def main():
         print(f"  {move:8s} fastest wrist {best['wrist_mps']:5.1f} m/s ankle {best['ankle_mps']:5.1f} m/s elbow {best['elbow_radps']:5.1f} rad/s "
               f"knee {best['knee_radps']:5.1f} rad/s; at most {best['max_over_library']:.3f} of the library's, over it in {best['over_library']} bouts; "
               f"held back {best['held_back_frames']}/{best['frames']} frames", file=sys.stderr)
-    print(json.dumps({"aim": args.aim, "distance_m": args.distance, "order_every_s": 2.0, "overall": overall,
+    by_distance = {}
+    for row in rows:
+        total = by_distance.setdefault(f"{row['distance_m']:g}", {"strikes": 0, "hits": 0, "would_land": 0, "landed": 0})
+        total["strikes"] += row["strikes"]
+        total["hits"] += row["hits"]
+        total["landed"] += row["landed"]
+        total["would_land"] += row["blocked"] + row["slipped"] + row["landed"]
+    for total in by_distance.values():
+        total["hit_rate"] = rate(total["hits"], total["strikes"])
+        total["defended_rate"] = rate(total["would_land"] - total["landed"], total["would_land"])
+    overall["by_distance"] = by_distance
+    if len(by_distance) > 1:
+        print("by distance: " + ", ".join(f"{d} m landed {t['landed']}/{t['would_land']}, hits {fmt(t['hits'], t['strikes'])}"
+                                          for d, t in by_distance.items()), file=sys.stderr)
+    print(json.dumps({"aim": args.aim, "distance_m": args.distances[0] if len(args.distances) == 1 else args.distances, "order_every_s": 2.0, "overall": overall,
                       "per_opponent": per_opponent, "bouts": rows}, indent=2))
 
 
