@@ -46,23 +46,26 @@ bool Footwork::out_of_band(const UserRange& user, const Band& band) const {
     return distance_at_landing(m_step_clips[0], user) > band.far_m || distance_at_landing(m_step_clips[1], user) < band.near_m;
 }
 
-double Footwork::near_m(const CharacterBody& body, const TrackedUser& user) const {
+Footwork::Band Footwork::reach_band(const CharacterBody& body, const TrackedUser& user) const {
     const double leg = body.leg_length();
+    if (!user.tracking()) return {m_near_legs * leg, m_far_legs * leg, m_landing_in_band};
+    const double reach = strike_reach_m(body, user.head(), m_reach_fallback);
     // Arms that reach the head from nowhere (a user much taller: strike_reach_m is 0) strike lower, from closer in.
-    const bool head_out_of_reach = user.tracking() && strike_reach_m(body, user.head(), m_reach_fallback) <= 0.0;
-    return head_out_of_reach ? std::min(m_near_legs * leg, close_near_m(leg)) : m_near_legs * leg;
+    const double near = reach <= 0.0 ? std::min(m_near_legs * leg, close_near_m(leg)) : m_near_legs * leg;
+    return {near, std::clamp(reach, near + k_min_band_legs * leg, m_far_legs * leg), m_landing_in_band};
 }
 
-double Footwork::far_m(const CharacterBody& body, const TrackedUser& user) const {
-    const double leg = body.leg_length(), near = near_m(body, user);
-    return user.tracking() ? std::clamp(strike_reach_m(body, user.head(), m_reach_fallback), near + k_min_band_legs * leg, m_far_legs * leg)
-                           : m_far_legs * leg;
+double Footwork::near_m(const CharacterBody& body, const TrackedUser& user, bool short_strike) const {
+    const double near = reach_band(body, user).near_m;
+    return short_strike ? std::min(near, close_near_m(body.leg_length())) : near;
 }
+
+double Footwork::far_m(const CharacterBody& body, const TrackedUser& user) const { return reach_band(body, user).far_m; }
 
 Footwork::Band Footwork::strike_band(const CharacterBody& body, const TrackedUser& user, double closer_than_m) const {
     // Land in the far part of the band: in reach, without crowding the user's face.
     const double leg = body.leg_length();
-    Band band{near_m(body, user), far_m(body, user), m_landing_in_band};
+    Band band = reach_band(body, user);
     if (closer_than_m >= 0.0) band.near_m = std::min(band.near_m, close_near_m(leg));
     if (closer_than_m >= 0.0 && closer_than_m <= band.far_m) {
         band.far_m = std::max(band.near_m + k_min_band_legs * leg, closer_than_m - k_min_band_legs * leg);

@@ -29,8 +29,8 @@ public:
     // The band where strikes reach: from near_legs leg lengths to the arms' reach (strike_aim.h), at most far_legs;
     // a quarter leg wide at least, so a shortened step lands inside it. Without a tracked user, the settings' band.
     // The near end: near_legs, or close_near_m when the arms reach the user's head from nowhere (a chibi before an
-    // adult: its strikes go lower, from closer in).
-    double near_m(const CharacterBody& body, const TrackedUser& user) const;
+    // adult: its strikes go lower, from closer in) or for a `short_strike` (one that reached from nowhere in the band).
+    double near_m(const CharacterBody& body, const TrackedUser& user, bool short_strike = false) const;
     // The near end for a strike that does not reach from the band (a short one: an elbow, a knee).
     double close_near_m(double leg_length) const { return m_close_near_legs * leg_length; }
     double far_m(const CharacterBody& body, const TrackedUser& user) const;
@@ -75,6 +75,9 @@ public:
     Next next_clip(bool resting_with_user, const UserRange& user, const Band& band, double leg_length) const;
 
 private:
+    // Both ends of the strike band from one look at the arms' reach (strike_reach_m); the settings' without a user.
+    Band reach_band(const CharacterBody& body, const TrackedUser& user) const;
+
     const MotionDatabaseView& m_db;
     int m_guard_clip = -1;
     std::array<int, 4> m_step_clips{-1, -1, -1, -1}; // forward, back, left, right

@@ -35,8 +35,7 @@ StrikePlanner::Outcome StrikePlanner::plan(double t_s, FighterAim aim, bool appr
     // A user pressed against the fighter (nearer than the strike band, or than its near end for the shortest strikes
     // when none reached from the band: an elbow, a knee) is not struck from there: it steps back first (the footwork's
     // step out of the band), as long as the order may wait.
-    const double near_m = pending.tried ? footwork.close_near_m(body.leg_length()) : footwork.near_m(body, user);
-    if (waiting_allowed && user.tracking() && user.distance_from(body.heading().origin) < near_m) return Outcome::waiting;
+    if (waiting_allowed && user.tracking() && user.distance_from(body.heading().origin) < footwork.near_m(body, user, pending.tried)) return Outcome::waiting;
     // The first round looks at every part, as many per step as the planning budget lets it (all at once unless many
     // fighters plan in the same frame); while the order waits, one part per frame, in turn from the head down (each
     // look is a retrieval and the adaptation's planning: a hundred fighters waiting at once stay cheap).
