@@ -40,7 +40,7 @@ const CommandSpec& play_spec() {
         "play",
         "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:HEAD[,LEFT,RIGHT]] | replay:FILE | simulate:KIND|FILE] "
         "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] "
-        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--max-speedup RATIO] [--human-speed] [--superhuman-strikes] [--superhuman-moves] [--superhuman-blocks] [--superhuman-extremities] [--drop-guard] [--no-hit-reactions] [--rest-in-reach] [--stay-after-strikes] [--stand-ground] [--lead-steps] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
+        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--max-speedup RATIO] [--human-speed] [--superhuman-strikes] [--superhuman-moves] [--superhuman-blocks] [--superhuman-extremities] [--drop-guard] [--no-hit-reactions] [--rest-in-reach] [--stay-after-strikes] [--play-out-strikes] [--stand-ground] [--lead-steps] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
         "Runs the fighter at 60 Hz against the user's head and hands (a DTrack system, a replayed CSV, or a\n"
         "simulated user) and the supervisor's commands, one per line: punch [left|right] [straight|hook|uppercut]\n"
         "[low|middle|high], kick [left|right] [front|roundhouse|side] [low|middle|high], slash [left|right] [low|middle|high],\n"
@@ -86,6 +86,8 @@ const CommandSpec& play_spec() {
                                "(0.8-1.2 leg lengths from the user's head), stepping in to strike and out after"},
          {"stay-after-strikes", "", "after a strike the fighter recovers where it stands, then steps out (default: with no order waiting, it\n"
                                    "recovers stepping back out to the fighting distance)"},
+         {"play-out-strikes", "", "every strike's captured clip is played to its end (default: 0.15 s after its contact, the impact and\n"
+                                 "the recoil shown, the fighter recovers to its guard from there, free to slip, block and step out)"},
          {"stand-ground", "", "a user who rushes in while the fighter steps or recovers is met where it stands, stepping back only\n"
                              "where its clip ends (default: nearer than 0.6 leg lengths, it steps back at once)"},
          {"lead-steps", "", "a step is sized for where a walking user's head will be when it lands (a settled course at 0.3 m/s or\n"
@@ -248,6 +250,7 @@ int run_play(int argc, char** argv) {
     options.fighter.steps_lead_user = arguments.has("lead-steps");
     options.fighter.step_out_after_strikes = !arguments.has("stay-after-strikes");
     if (arguments.has("stand-ground")) options.fighter.crowd_legs = 0.0;
+    if (arguments.has("play-out-strikes")) options.fighter.strike_follow_s = 0.0;
     options.fighter.defence.captured_blocks = arguments.has("captured-blocks");
     options.fighter.defence.block_clip_max_speed_ratio = *block_speed_limit;
     options.fighter.variety_recent = static_cast<int>(*variety);

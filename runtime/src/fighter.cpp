@@ -86,8 +86,8 @@ void Fighter::take_blow(double t_s) {
         m_blow_pending = true;
         m_blow = p.defence.landed_strike();
     }
-    // A strike under way is played out: its limb comes back at the clip's speed (cut short, a kick's leg would drop
-    // from the target at several times a person's speed).
+    // A strike under way is played out to its end (strike_follow_s after its contact): its limb comes back at human
+    // speed from there (cut short before, a kick's leg would drop from the target at several times a person's speed).
     if (!m_blow_pending || m_state == FighterState::strike) return;
     m_blow_pending = false;
     const HeadingFrame heading = p.body.heading();
@@ -152,7 +152,10 @@ void Fighter::play_strike(double t_s) {
         }
     }
     p.strike.measure(t_s, p.body, p.user, p.log); // the contact as shown
-    if (!p.strike.over()) return;
+    // Over at the clip's end, or once its contact and recoil are shown (strike_follow_s): the recovery takes it from there.
+    const double contact_s = p.strike.contact_shown_s();
+    const bool followed_through = m_settings.strike_follow_s > 0.0 && contact_s >= 0.0 && t_s - contact_s >= m_settings.strike_follow_s;
+    if (!p.strike.over() && !followed_through) return;
     p.strike.end(t_s, p.log);
     enter(FighterState::recover, t_s);
     if (m_settings.step_out_after_strikes && p.user.tracking() && !p.orders.has_pending() && !p.orders.has_queued()) {

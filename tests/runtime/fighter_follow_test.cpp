@@ -73,6 +73,7 @@ TEST_CASE("fighter: out after a strike, the fighter recovers stepping back to th
         FighterSettings settings;
         settings.step_out_after_strikes = step_out;
         settings.crowd_legs = step_out ? settings.crowd_legs : 0.0; // staying: no step back begun in the recovery at all
+        settings.strike_follow_s = 0.0; // each clip played out, its own way back carrying the fighter in: what the step out undoes
         kumite::test::Bout b(content->view(), "brawler", settings);
         MotionMeter meter(1);
         const Eigen::Vector3d head(0.0, 1.6, 1.0);

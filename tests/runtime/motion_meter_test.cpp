@@ -119,7 +119,8 @@ TEST_CASE("fighter: how long a strike's hit point stays where it stopped, as its
     settings.surface_depth_m = 0.0;
     settings.step_out_after_strikes = false; // stepping out after each (or stepping back from the head in the
     settings.crowd_legs = 0.0;               // recovery), the next strikes begin from further off and none of them
-                                             // stays a frame either
+                                             // stays a frame either; nor ended early (they begin from another pose)
+    settings.strike_follow_s = 0.0;
     kumite::test::Bout bout(content->view(), "brawler", settings);
     const Eigen::Vector3d head(0.0, 1.65, 1.0);
     // Punches and kicks at a still head; after each contact, the frames the hit joint of the pose shown stays within
@@ -189,6 +190,7 @@ TEST_CASE("fighter: no joint moves faster than the library's fastest for its kin
     long long held = 0;
     FighterSettings human;
     human.human_speed = true;
+    human.strike_follow_s = 0.0; // the strikes' clips played out: the same bout as the free one below
     const MotionMeter meter = punching_bout(content->view(), human, held);
     const kumite::test::StandingCharacter brawler("brawler", content->view());
     const auto library = library_joint_speeds(content->view(), brawler.skeleton(), brawler.anatomy);
@@ -211,6 +213,7 @@ TEST_CASE("fighter: no joint moves faster than the library's fastest for its kin
     // over: the block's arm.
     long long held_free = 0;
     FighterSettings free;
+    free.strike_follow_s = 0.0;
     free.human_speed_blocks = free.human_extremities = free.human_speed_but_strikes = false; // nothing held at all
     const MotionMeter free_meter = punching_bout(content->view(), free, held_free);
     CHECK(held_free == 0);
@@ -433,6 +436,7 @@ TEST_CASE("fighter: a strike's own limb at the library's speed lands at that spe
     FighterSettings held_limb;
     held_limb.step_out_after_strikes = false; // the same footwork in the three bouts: the strikes compared, not the steps
     held_limb.crowd_legs = 0.0;
+    held_limb.strike_follow_s = 0.0;
     StrikeSpeeds defaults = kata_bout(content->view(), kata, held_limb);
     FighterSettings free_limb = held_limb;
     free_limb.human_speed_strikes = false; // --superhuman-strikes

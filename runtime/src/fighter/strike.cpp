@@ -59,6 +59,7 @@ void Strike::start(double t_s, const Purpose& purpose) {
     m_clock_s = m_clock_before_s = 0.0;
     m_last_play_s = t_s;
     m_contact_done = false;
+    m_contact_shown_s = -1.0;
     m_contact_now = false;
     m_over = false;
     m_overshoot_m = 0.0;
@@ -172,7 +173,10 @@ void Strike::measure(double t_s, CharacterBody& body, const TrackedUser& user, E
     }
     // From the contact on, while the hit point stays where it stopped (the target, or out of reach the nearest point
     // to it): how long it is held there.
-    if (m_contact_now) m_holding = true;
+    if (m_contact_now) {
+        m_contact_shown_s = t_s;
+        m_holding = true;
+    }
     else if (m_holding && (effector - body.current().adapter.stop_point()).norm() <= 0.01 && t_s > m_previous_effector_s) m_held_s += t_s - m_previous_effector_s;
     else m_holding = false;
     m_previous_effector = effector;

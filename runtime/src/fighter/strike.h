@@ -60,6 +60,8 @@ public:
     // shown (error, hit, speed), the time held at the target, the body's MIR frame encoded from the pose shown.
     void measure(double t_s, CharacterBody& body, const TrackedUser& user, EventLog& log);
     bool over() const { return m_over; } // the last frame was played: strike_end() and recover
+    // When its contact was shown (measure()), or -1 before it.
+    double contact_shown_s() const { return m_contact_shown_s; }
     void end(double t_s, EventLog& log);
 
     const StrikePlan& plan() const { return m_plan; }
@@ -85,6 +87,7 @@ private:
     double m_clock_before_s = 0.0;   // ... at the frame before
     double m_last_play_s = 0.0;      // when play() last ran
     bool m_contact_done = false;
+    double m_contact_shown_s = -1.0;
     bool m_contact_now = false;      // this frame is the contact (play() to measure())
     bool m_over = false;
     bool m_impact = true;
