@@ -78,7 +78,7 @@ const CommandSpec& play_spec() {
          {"plans-per-frame", "N", "at most N fighters plan a strike in one frame, the others on the next frames, oldest order first (default 14; 0: no limit)"},
          {"steer-until", "S", "predicted aim: the strike follows the head until S before its contact (default 0.15 s; 0: never steers)"},
          {"variety", "N", "prefer a clip not used in the last N strikes when one scores within 0.15 of the best (default 6, 0: always the best)"},
-         {"max-speedup", "RATIO", "a punch or kick captured slower than a real one lands (5 and 6 m/s) is played up to RATIO times as fast until\n"
+         {"max-speedup", "RATIO", "a punch or kick captured slower than a real one lands (5 and 7 m/s) is played up to RATIO times as fast until\n"
                                   "its contact, which comes when it would as captured (default 1.6, at most 1.9; 1: every strike at its captured speed)"},
          {"human-speed", "", "no joint of the fighter moves faster than the library's fastest for its kind of move (wrists and ankles\n"
                              "never over 12 m/s): a move that asks for more is shown lagging (the report's motion.by_move held_back_frames)"},
