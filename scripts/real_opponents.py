@@ -3,7 +3,8 @@
 both hands, 1.2 m in front of the fighter, facing it) for the capture's length, an order every 2 s (punch and kick
 alternately, sides alternating), for each character. Prints a table per opponent x character on stderr and one
 JSON document on stdout: strikes and hits, orders performed / queued / expired / ignored, and the opponent's
-strikes at the fighter (seen, blocked, slipped, landed, missed). The overall hit and defended rates come with their
+strikes at the fighter (seen, blocked, slipped, landed, missed; `overall.on_course`: slips counted only where the hand
+would have hit without them). The overall hit and defended rates come with their
 95% Wilson intervals (`hit_rate_ci95`, `defended_rate_ci95`): two settings whose rates differ by less than that may
 differ by chance (the order of blows, a strike a frame later), not by what was changed.
 
@@ -116,6 +117,7 @@ def main():
                          "queued": orders.get("queued", 0), "expired": orders.get("expired", 0),
                          "ignored": report["ignored_orders"], "strikes": report["strikes"], "hits": report["hits"],
                          "user_seen": user["seen"], "blocked": user["blocked"], "slipped": user["slipped"],
+                         "slipped_on_course": user.get("slipped_on_course", user["slipped"]),
                          "blocks": user["blocks"], "slips": user.get("slips", 0), "block_clips": user.get("block_clips", 0),
                          "landed": user["hit_by_user"], "user_missed": user["missed"],
                          "by_fighter_state": user.get("by_fighter_state", {}),
@@ -155,6 +157,14 @@ def main():
     overall["defended_rate"] = rate(overall["defended"], overall["would_land"])
     overall["hit_rate_ci95"] = wilson_95(overall["hits"], overall["strikes"])
     overall["defended_rate_ci95"] = wilson_95(overall["defended"], overall["would_land"])
+    # The same, counting a slip only where the hand's path passed within the hit radius of where the head (chest) would
+    # have been without it: a slip starts for any course within the threat radius, and one that would have missed anyway
+    # is no blow defended.
+    on_course = {"defended": sum(row["blocked"] + row["slipped_on_course"] for row in rows)}
+    on_course["would_land"] = on_course["defended"] + sum(row["landed"] for row in rows)
+    on_course["defended_rate"] = rate(on_course["defended"], on_course["would_land"])
+    on_course["defended_rate_ci95"] = wilson_95(on_course["defended"], on_course["would_land"])
+    overall["on_course"] = on_course
     worst_hits = min(per_opponent.items(), key=lambda item: item[1]["hit_rate"] if item[1]["hit_rate"] is not None else 2.0)
     worst_defence = min(per_opponent.items(), key=lambda item: item[1]["defended_rate"] if item[1]["defended_rate"] is not None else 2.0)
     print("per opponent:", file=sys.stderr)
@@ -164,6 +174,7 @@ def main():
     interval = lambda ci: f" (95% {100 * ci[0]:.0f}-{100 * ci[1]:.0f}%)" if ci else ""
     print(f"overall: hits {fmt(overall['hits'], overall['strikes'])}{interval(overall['hit_rate_ci95'])}, "
           f"defended {fmt(overall['defended'], overall['would_land'])}{interval(overall['defended_rate_ci95'])}, "
+          f"slips on course only {fmt(on_course['defended'], on_course['would_land'])}{interval(on_course['defended_rate_ci95'])}, "
           f"captured blocks {fmt(overall['block_clips'], overall['blocks'])}; "
           f"worst hits {worst_hits[0]}, worst defence {worst_defence[0]}", file=sys.stderr)
     # Motion (issue 44): speed at contact by kind, the fastest joints by move against the library's, the distance kept.

@@ -226,7 +226,10 @@ void Bout::step(double t_s) {
             case FighterEvent::Type::user_strike_end:
                 switch (event.user_strike.outcome) {
                 case UserStrikeOutcome::blocked: ++m_counters.blocked; break;
-                case UserStrikeOutcome::slipped: ++m_counters.slipped; break;
+                case UserStrikeOutcome::slipped:
+                    ++m_counters.slipped;
+                    m_counters.slipped_on_course += event.user_strike.unslipped_clearance_m <= 0.0;
+                    break;
                 case UserStrikeOutcome::hit_by_user: ++m_counters.hit_by_user; break;
                 case UserStrikeOutcome::missed: ++m_counters.user_missed; break;
                 }

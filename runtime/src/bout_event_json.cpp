@@ -89,6 +89,8 @@ nlohmann::json event_object(const Bout& bout, const BoutEvent& bout_event) {
         line["move"] = defence_move_name(event.user_strike.move);
         line["outcome"] = user_strike_outcome_name(event.user_strike.outcome);
         if (event.user_strike.forearm_to_path_m >= 0.0) line["forearm_to_path_m"] = event.user_strike.forearm_to_path_m;
+        if (event.user_strike.outcome == UserStrikeOutcome::slipped && event.user_strike.unslipped_clearance_m < 1e8)
+            line["unslipped_clearance_m"] = event.user_strike.unslipped_clearance_m;
         line["detected"] = event.user_strike.detected;
         if (event.user_strike.blocking_arm >= 0) line["blocking_arm"] = event.user_strike.blocking_arm == 0 ? "left" : "right";
         if (event.user_strike.block_clip >= 0) line["block_clip"] = bout.database().string(bout.database().clips[event.user_strike.block_clip].name);

@@ -216,6 +216,7 @@ double Defence::ramp_weight(double t_s) const { return m_ramp_from + (1.0 - m_ra
 
 void Defence::update(double t_s, const UserHands& hands, const DefenderBody& body, const Allowed& allowed) {
     m_block_started = false;
+    const double shown_slip_weight = slip_weight(); // the lean `body` shows: last frame's
     // The move's weight: in over its ramp, held until after the hand's arrival, then out.
     if (m_move != DefenceMove::none) {
         if (t_s <= m_hold_until_s) {
@@ -284,6 +285,12 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
                     m_ramp_s = std::max({dt, to_meeting_s + dt, shortest_ramp_s((1.0 - m_weight) * m_block_travel_m)});
                     m_weight = ramp_weight(t_s);
                 }
+            }
+            if (m_move == DefenceMove::slip && m_move_hand == side) {
+                const Eigen::Vector3d lean = shown_slip_weight * m_slip_offset;
+                const Eigen::Vector3d part = hand.strike.at_head ? Eigen::Vector3d(body.head - lean) : Eigen::Vector3d(body.chest - 0.5 * lean);
+                const double radius = hand.strike.at_head ? m_settings.head_radius_m : m_settings.chest_radius_m;
+                hand.strike.unslipped_clearance_m = std::min(hand.strike.unslipped_clearance_m, segment_distance(before, now, part, part) - radius);
             }
             if (blocking) {
                 const double to_forearm = segment_distance(before, now, body.elbow[m_arm], body.wrist[m_arm]);

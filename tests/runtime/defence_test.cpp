@@ -264,3 +264,36 @@ TEST_CASE("defence: a block met nearer when the fist is seen late ramps over the
     }
     CHECK(nearer >= 3);
 }
+
+TEST_CASE("defence: a slip is counted as keeping a blow off only where the hand would have hit the head without it", "[runtime]") {
+    // Slip only (no arm free), the head leaned as the defence asks; the user's left hand from 0.9 m in front at 5 m/s,
+    // straight through where the head was, or 0.22 m beside it (inside the threat radius, outside the head's).
+    const auto slipped = [](double beside_m) {
+        Defence defence;
+        const Defence::Allowed slip_only{{false, false}, true};
+        const auto path = straight(Eigen::Vector3d(beside_m, 1.55, 0.9), Eigen::Vector3d(beside_m, 1.6, -0.3), 5.0);
+        UserStrikeEvent ended;
+        for (int frame = 0; frame < 60; ++frame) {
+            const double t = frame / 60.0;
+            DefenderBody body = guard_body();
+            body.head += defence.slip_weight() * defence.slip_offset();
+            body.chest += 0.5 * defence.slip_weight() * defence.slip_offset();
+            UserHands hands;
+            hands.present = {true, true};
+            hands.world[0] = path(t);
+            hands.world[1] = Eigen::Vector3d(-0.5, 1.3, 0.8);
+            defence.update(t, hands, body, slip_only);
+            for (const UserStrikeEvent& event : defence.events())
+                if (event.ended) ended = event;
+            defence.clear_events();
+        }
+        return ended;
+    };
+    const UserStrikeEvent through = slipped(0.0), beside = slipped(0.22);
+    CHECK(through.move == DefenceMove::slip);
+    CHECK(through.outcome == UserStrikeOutcome::slipped);
+    CHECK(through.unslipped_clearance_m <= 0.0); // it would have landed: the slip kept it off
+    CHECK(beside.move == DefenceMove::slip);
+    CHECK(beside.outcome == UserStrikeOutcome::slipped);
+    CHECK(beside.unslipped_clearance_m == Approx(0.22 - Defence{}.settings().head_radius_m).margin(0.02)); // it would have missed anyway
+}

@@ -94,6 +94,10 @@ struct UserStrikeEvent {
     double arm_speed_mps = -1.0;     // ended blocks: the fastest the blocking wrist or elbow moved relative to the shoulder
     double clip_arm_speed_mps = -1.0; // block_clip: the same for the captured clip itself, on this arm
     Eigen::Vector3d hand_velocity = Eigen::Vector3d::Zero(); // ended: the hand's velocity then (world, m/s): how a blow that landed pushes
+    // Slipped: how far outside the hit radius the hand's path passed where the part it was aimed at would have been
+    // without the lean (the head by the slip's offset as shown, the chest by half of it); <= 0: the slip is what kept
+    // it off, > 0: it would have missed anyway (a slip is started for any course within threat_radius_m).
+    double unslipped_clearance_m = 1e9;
 };
 
 // The distance between segments [a0, a1] and [b0, b1].
