@@ -9,7 +9,8 @@ would have hit without them). The overall hit and defended rates come with their
 differ by chance (the order of blows, a strike a frame later), not by what was changed.
 
   scripts/real_opponents.py [--db DB.kdb] [--opponents GLOB,...] [--characters kid,scout,brawler,runner,giant]
-                            [--aim predicted] [--distance 1.2 | --distance 1.1,1.2,1.3] [--max-seconds 60] [--jobs 2]
+                            [--aim predicted] [--distance 1.2 | --distance 1.1,1.2,1.3] [--order-delay 0 | --order-delay 0,0.1,0.2]
+                            [--max-seconds 60] [--jobs 2]
 
 Default opponents: ../shared/mocap/cmu14-boxing/box-*.bvh (shadow boxing) and ../shared/mocap/hachaj-kata/*.bvh
 (kata stepping towards the fighter).
@@ -34,13 +35,15 @@ def capture_seconds(kumite, path):
     return info["duration_s"]
 
 
-def bout(args, work, opponent, seconds, character, distance):
+def bout(args, work, opponent, seconds, character, distance, delay):
     name = f"{os.path.basename(os.path.dirname(opponent))}_{os.path.basename(opponent)}_{character}"
     if len(args.distances) > 1:
         name += f"_{distance:g}m"
+    if len(args.delays) > 1:
+        name += f"_{delay:g}s"
     script = os.path.join(work, name + ".orders")
     with open(script, "w") as out:
-        t, n = 1.0, 0
+        t, n = 1.0 + delay, 0
         while t < seconds - 1.0:
             out.write(f"{t:.2f} {'punch' if n % 2 == 0 else 'kick'} {'left' if (n // 2) % 2 == 0 else 'right'}\n")
             t += 2.0
@@ -85,6 +88,8 @@ def main():
     parser.add_argument("--aim", default="predicted")
     parser.add_argument("--distance", default="1.2", help="metres from the fighter; several, comma-separated (1.1,1.2,1.3): "
                         "every bout at each, pooled (a single distance's blows move by chance by about ten)")
+    parser.add_argument("--order-delay", default="0", help="every order this much later (s); several, comma-separated (0,0.1,0.2): "
+                        "every bout with each, pooled (the same opponents met at other moments: the spread a setting has by chance)")
     parser.add_argument("--max-seconds", type=float, default=60.0, help="bouts last the capture's length, at most this")
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     parser.add_argument("--events", default=None, help="a folder to keep each bout's events in")
@@ -95,6 +100,12 @@ def main():
         args.distances = [float(d) for d in args.distance.split(",")]
     except ValueError:
         sys.exit(f"real_opponents: --distance takes metres, comma-separated (got {args.distance})")
+    try:
+        args.delays = [float(d) for d in args.order_delay.split(",")]
+    except ValueError:
+        sys.exit(f"real_opponents: --order-delay takes seconds, comma-separated (got {args.order_delay})")
+    if any(d < 0.0 or d >= 2.0 for d in args.delays):
+        sys.exit(f"real_opponents: --order-delay must be at least 0 and under the 2 s between orders (got {args.order_delay})")
 
     opponents = sorted(path for pattern in args.opponents.split(",") for path in glob.glob(pattern))
     if not opponents:
@@ -105,14 +116,14 @@ def main():
     rows = []
     with tempfile.TemporaryDirectory() as work, concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         seconds = {opponent: min(args.max_seconds, capture_seconds(args.kumite, opponent)) for opponent in opponents}
-        futures = {(opponent, character, distance): pool.submit(bout, args, work, opponent, seconds[opponent], character, distance)
-                   for distance in args.distances for opponent in opponents for character in characters}
-        for (opponent, character, distance), future in futures.items():
+        futures = {(opponent, character, distance, delay): pool.submit(bout, args, work, opponent, seconds[opponent], character, distance, delay)
+                   for delay in args.delays for distance in args.distances for opponent in opponents for character in characters}
+        for (opponent, character, distance, delay), future in futures.items():
             report = future.result()
             user = report["user_strikes"]
             orders = report.get("order_outcomes", {})
             rows.append({"opponent": os.path.relpath(opponent, shared) if opponent.startswith(shared) else opponent,
-                         "character": character, "distance_m": distance, "seconds": seconds[opponent],
+                         "character": character, "distance_m": distance, "order_delay_s": delay, "seconds": seconds[opponent],
                          "orders": report["orders"], "performed": orders.get("performed", report["strikes"]),
                          "queued": orders.get("queued", 0), "expired": orders.get("expired", 0),
                          "ignored": report["ignored_orders"], "strikes": report["strikes"], "hits": report["hits"],
@@ -220,21 +231,27 @@ def main():
         print(f"  {move:8s} fastest wrist {best['wrist_mps']:5.1f} m/s ankle {best['ankle_mps']:5.1f} m/s elbow {best['elbow_radps']:5.1f} rad/s "
               f"knee {best['knee_radps']:5.1f} rad/s; at most {best['max_over_library']:.3f} of the library's, over it in {best['over_library']} bouts; "
               f"held back {best['held_back_frames']}/{best['frames']} frames", file=sys.stderr)
-    by_distance = {}
-    for row in rows:
-        total = by_distance.setdefault(f"{row['distance_m']:g}", {"strikes": 0, "hits": 0, "would_land": 0, "landed": 0})
-        total["strikes"] += row["strikes"]
-        total["hits"] += row["hits"]
-        total["landed"] += row["landed"]
-        total["would_land"] += row["blocked"] + row["slipped"] + row["landed"]
-    for total in by_distance.values():
-        total["hit_rate"] = rate(total["hits"], total["strikes"])
-        total["defended_rate"] = rate(total["would_land"] - total["landed"], total["would_land"])
-    overall["by_distance"] = by_distance
-    if len(by_distance) > 1:
-        print("by distance: " + ", ".join(f"{d} m landed {t['landed']}/{t['would_land']}, hits {fmt(t['hits'], t['strikes'])}"
-                                          for d, t in by_distance.items()), file=sys.stderr)
-    print(json.dumps({"aim": args.aim, "distance_m": args.distances[0] if len(args.distances) == 1 else args.distances, "order_every_s": 2.0, "overall": overall,
+    def pooled_by(key, what):
+        """The landed blows and hits of the bouts grouped by one setting of the run (a distance, an order delay)."""
+        groups = {}
+        for row in rows:
+            total = groups.setdefault(f"{row[key]:g}", {"strikes": 0, "hits": 0, "would_land": 0, "landed": 0})
+            total["strikes"] += row["strikes"]
+            total["hits"] += row["hits"]
+            total["landed"] += row["landed"]
+            total["would_land"] += row["blocked"] + row["slipped"] + row["landed"]
+        for total in groups.values():
+            total["hit_rate"] = rate(total["hits"], total["strikes"])
+            total["defended_rate"] = rate(total["would_land"] - total["landed"], total["would_land"])
+        if len(groups) > 1:
+            print(f"by {what}: " + ", ".join(f"{k} landed {t['landed']}/{t['would_land']}, hits {fmt(t['hits'], t['strikes'])}"
+                                           for k, t in groups.items()), file=sys.stderr)
+        return groups
+
+    overall["by_distance"] = pooled_by("distance_m", "distance (m)")
+    overall["by_order_delay"] = pooled_by("order_delay_s", "order delay (s)")
+    print(json.dumps({"aim": args.aim, "distance_m": args.distances[0] if len(args.distances) == 1 else args.distances,
+                      "order_delay_s": args.delays[0] if len(args.delays) == 1 else args.delays, "order_every_s": 2.0, "overall": overall,
                       "per_opponent": per_opponent, "bouts": rows}, indent=2))
 
 
