@@ -40,7 +40,7 @@ const CommandSpec& play_spec() {
         "play",
         "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:HEAD[,LEFT,RIGHT]] | replay:FILE | simulate:KIND|FILE] "
         "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] "
-        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--max-speedup RATIO] [--human-speed] [--superhuman-strikes] [--superhuman-moves] [--superhuman-blocks] [--superhuman-extremities] [--drop-guard] [--no-hit-reactions] [--rest-in-reach] [--stay-after-strikes] [--play-out-strikes] [--stand-ground] [--lead-steps] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
+        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--max-speedup RATIO] [--human-speed] [--superhuman-strikes] [--superhuman-moves] [--superhuman-blocks] [--superhuman-extremities] [--drop-guard] [--no-hit-reactions] [--rest-in-reach] [--stay-after-strikes] [--play-out-strikes] [--stand-ground] [--no-lead-steps] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
         "Runs the fighter at 60 Hz against the user's head and hands (a DTrack system, a replayed CSV, or a\n"
         "simulated user) and the supervisor's commands, one per line: punch [left|right] [straight|hook|uppercut]\n"
         "[low|middle|high], kick [left|right] [front|roundhouse|side] [low|middle|high], slash [left|right] [low|middle|high],\n"
@@ -90,8 +90,9 @@ const CommandSpec& play_spec() {
                                  "the recoil shown, the fighter recovers to its guard from there, free to slip, block and step out)"},
          {"stand-ground", "", "a user who rushes in while the fighter steps or recovers is met where it stands, stepping back only\n"
                              "where its clip ends (default: nearer than 0.6 leg lengths, it steps back at once)"},
-         {"lead-steps", "", "a step is sized for where a walking user's head will be when it lands (a settled course at 0.3 m/s or\n"
-                           "more), not where it is: a user who walks away is caught up with (default: off)"},
+         {"lead-steps", "", "steps sized for where a walking user will be (the default; kept for scripts that ask for it)"},
+         {"no-lead-steps", "", "a step is sized for where the user's head is, not where it will be when the step lands (default: for a\n"
+                              "user on a settled course at 0.6 m/s or more, where it will be: one who walks away is caught up with)"},
          {"superhuman-strikes", "", "a strike's own limb has its elbow or knee free (default: held to the library's fastest for the kind of\n"
                                    "strike, as every other joint; the strike waits for a fist or foot more than half the hit radius behind)"},
          {"superhuman-moves", "", "steps, the guard, slips, recoveries, hit reactions and strikes are not held to the library's speeds for\n"
@@ -247,7 +248,7 @@ int run_play(int argc, char** argv) {
     options.fighter.human_speed_strikes = !arguments.has("superhuman-strikes");
     options.fighter.human_extremities = !arguments.has("superhuman-extremities");
     options.fighter.keep_distance = !arguments.has("rest-in-reach");
-    options.fighter.steps_lead_user = arguments.has("lead-steps");
+    options.fighter.steps_lead_user = !arguments.has("no-lead-steps");
     options.fighter.step_out_after_strikes = !arguments.has("stay-after-strikes");
     if (arguments.has("stand-ground")) options.fighter.crowd_legs = 0.0;
     if (arguments.has("play-out-strikes")) options.fighter.strike_follow_s = 0.0;

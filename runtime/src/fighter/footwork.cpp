@@ -10,7 +10,8 @@ namespace kumite {
 Footwork::Footwork(const MotionDatabaseView& db, const FighterSettings& settings)
     : m_db(db), m_near_legs(settings.near_legs), m_close_near_legs(settings.close_near_legs), m_far_legs(settings.far_legs), m_landing_in_band(settings.landing_in_band),
       m_min_step_scale(settings.min_step_scale), m_keep_distance(settings.keep_distance), m_rest_near_legs(settings.rest_near_legs),
-      m_rest_far_legs(settings.rest_far_legs), m_reach_fallback(settings.reach_fallback), m_lead_user(settings.steps_lead_user) {
+      m_rest_far_legs(settings.rest_far_legs), m_reach_fallback(settings.reach_fallback), m_lead_user(settings.steps_lead_user),
+      m_lead_walk_mps(settings.lead_walk_mps) {
     m_guard_clip = db_first_clip_of(db, "rest");
     if (m_guard_clip < 0) m_guard_clip = 0; // a database without a guard: its first clip stands in
     const char* steps[] = {"step_forward", "step_back", "step_left", "step_right"};
@@ -33,13 +34,15 @@ double Footwork::duration_s(int clip) const {
 Footwork::UserRange Footwork::range_of(const CharacterBody& body, const TrackedUser& user) {
     Eigen::Vector3d to_user = user.head() - body.heading().origin;
     to_user.y() = 0.0;
-    const Eigen::Vector3d velocity = user.motion().velocity();
-    const bool walking = user.motion().settled() && velocity.norm() >= k_walking_mps && to_user.norm() > 1e-6;
-    return {user.distance_from(body.heading().origin), walking ? velocity.dot(to_user.normalized()) : 0.0};
+    Eigen::Vector3d velocity = user.motion().velocity();
+    velocity.y() = 0.0;
+    const bool settled = user.motion().settled() && to_user.norm() > 1e-6;
+    return {user.distance_from(body.heading().origin), settled ? velocity.dot(to_user.normalized()) : 0.0, settled ? velocity.norm() : 0.0};
 }
 
 double Footwork::distance_at_landing(int clip, const UserRange& user) const {
-    return m_lead_user ? user.distance_m + user.receding_mps * duration_s(clip) : user.distance_m;
+    const bool walking = m_lead_user && user.course_mps >= m_lead_walk_mps;
+    return walking ? user.distance_m + user.receding_mps * duration_s(clip) : user.distance_m;
 }
 
 bool Footwork::out_of_band(const UserRange& user, const Band& band) const {

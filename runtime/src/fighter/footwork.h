@@ -54,12 +54,13 @@ public:
     struct UserRange {
         double distance_m = 0.0;
         double receding_mps = 0.0;
+        double course_mps = 0.0; // the head's horizontal speed on a settled course (0: not settled)
     };
-    // The user's range from the body; receding only on a settled course at a walking pace (a boxer's bob back and
-    // forth, the drift of a guard, are not followed ahead).
+    // The user's range from the body; receding only on a settled course (a boxer's bob back and forth, the drift of a
+    // guard, are not followed ahead).
     static UserRange range_of(const CharacterBody& body, const TrackedUser& user);
-    static constexpr double k_walking_mps = 0.3; // the slowest walk
-    // Where the user will be when a step of `clip` lands (with steps_lead_user), else where the user is.
+    // Where the user will be when a step of `clip` lands (with steps_lead_user, for a user on a settled course at
+    // lead_walk_mps or more), else where the user is.
     double distance_at_landing(int clip, const UserRange& user) const;
     // Whether a step forward or back is due: the user will be beyond the band's far end when a step forward lands,
     // or inside its near end when a step back does.
@@ -86,6 +87,7 @@ private:
     double m_rest_near_legs, m_rest_far_legs;
     bool m_reach_fallback;
     bool m_lead_user; // steps sized for where the user will be when they land
+    double m_lead_walk_mps; // ... for a user on a settled course at this speed or more
 };
 
 } // namespace kumite
