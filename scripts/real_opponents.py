@@ -80,6 +80,14 @@ def wilson_95(successes, trials):
     return [centre - half, centre + half]
 
 
+def numbers(text, flag, unit):
+    """A flag's comma-separated numbers, or a clear exit."""
+    try:
+        return [float(value) for value in text.split(",")]
+    except ValueError:
+        sys.exit(f"real_opponents: {flag} takes {unit}, comma-separated (got {text})")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--db", default=None, help="database (default: kumite's default database)")
@@ -96,14 +104,8 @@ def main():
     parser.add_argument("--kumite", default=os.path.join(root, "build", "bin", "kumite"))
     parser.add_argument("--play-args", default="", help="more arguments for kumite play, e.g. --captured-blocks")
     args = parser.parse_args()
-    try:
-        args.distances = [float(d) for d in args.distance.split(",")]
-    except ValueError:
-        sys.exit(f"real_opponents: --distance takes metres, comma-separated (got {args.distance})")
-    try:
-        args.delays = [float(d) for d in args.order_delay.split(",")]
-    except ValueError:
-        sys.exit(f"real_opponents: --order-delay takes seconds, comma-separated (got {args.order_delay})")
+    args.distances = numbers(args.distance, "--distance", "metres")
+    args.delays = numbers(args.order_delay, "--order-delay", "seconds")
     if any(d < 0.0 or d >= 2.0 for d in args.delays):
         sys.exit(f"real_opponents: --order-delay must be at least 0 and under the 2 s between orders (got {args.order_delay})")
 

@@ -86,8 +86,8 @@ void Fighter::take_blow(double t_s) {
         m_blow_pending = true;
         m_blow = p.defence.landed_strike();
     }
-    // A strike under way is played out to its end (strike_follow_s after its contact): its limb comes back at human
-    // speed from there (cut short before, a kick's leg would drop from the target at several times a person's speed).
+    // A strike under way ends first (strike_follow_s after its contact, its recoil shown): cut short before that, a
+    // kick's leg would drop from the target at several times a person's speed.
     if (!m_blow_pending || m_state == FighterState::strike) return;
     m_blow_pending = false;
     const HeadingFrame heading = p.body.heading();
