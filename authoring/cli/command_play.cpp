@@ -54,7 +54,7 @@ const CommandSpec& play_spec() {
          {"fighters", "N", "fighters side by side against the same user (default 1)"},
          {"tracker", "SOURCE", "dtrack:PORT[:BODY] (no BODY: the only 6d body, else the 3d markers' centroid), dtrack:PORT:HEAD,LEFT,RIGHT\n"
                               "(the hands too: 6d body or 3d marker ids), replay:FILE.csv (t,x,y,z[,lx,ly,lz,rx,ry,rz]), or\n"
-                              "simulate:still|wander|walk[:SPEED]|dodge|punch|counter|FILE (a user script; default simulate:still), or\n"
+                              "simulate:still|wander|walk[:SPEED]|dodge|dodge-seen|punch|counter|FILE (a user script; default simulate:still), or\n"
                               "capture:FILE.bvh[:DISTANCE[:START_S]] (a recorded person: its head and hands, facing the fighter, its mean\n"
                               "head DISTANCE m in front (default 1.2), from START_S s into the capture, looping at its end)"},
          {"tracker-config", "FILE.json", "the room: bind address, room-to-world transform, room bounds (dtrack)"},

@@ -22,6 +22,7 @@ std::optional<SimulatedKind> simulated_kind_from_name(std::string_view name) {
     if (name == "wander") return SimulatedKind::wander;
     if (name == "walk") return SimulatedKind::walk;
     if (name == "dodge") return SimulatedKind::dodge;
+    if (name == "dodge-seen") return SimulatedKind::dodge_seen;
     if (name == "punch") return SimulatedKind::punch;
     if (name == "counter") return SimulatedKind::counter;
     return std::nullopt;
@@ -38,7 +39,18 @@ void SimulatedUser::on_order(double t_s) {
     ++m_dodges;
 }
 
+void SimulatedUser::set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest, bool guarding) {
+    m_hands.set_opponent(head, chest);
+    // The fighter left its guard (a strike began) since it was last seen: a dodge 0.25 s after that.
+    if (m_kind == SimulatedKind::dodge_seen && m_opponent_guarding && !guarding) {
+        m_dodge_start_s = m_seen_s + 0.25;
+        ++m_dodges;
+    }
+    m_opponent_guarding = guarding;
+}
+
 Eigen::Vector3d SimulatedUser::head(double t_s) {
+    m_seen_s = t_s;
     const Eigen::Vector3d start = start_position();
     switch (m_kind) {
     case SimulatedKind::still:
@@ -60,7 +72,8 @@ Eigen::Vector3d SimulatedUser::head(double t_s) {
         const double s = (t_s - m_leg_start_s) / (m_leg_end_s - m_leg_start_s);
         return m_from + (m_to - m_from) * s;
     }
-    case SimulatedKind::dodge: {
+    case SimulatedKind::dodge:
+    case SimulatedKind::dodge_seen: {
         const double since = t_s - m_dodge_start_s;
         if (since < 0.0 || since > 1.3) return start;
         const double amount = dodge_amount(since);

@@ -35,6 +35,10 @@ std::vector<FighterEvent> bout(const MotionDatabaseView& db, SimulatedKind kind,
             b.fighter->order(b.retriever->semantics_id(orders % 2 ? "kick" : "punch"), static_cast<Side>(orders % 3));
             ++orders;
         }
+        // As kumite play shows the fighter to a simulated user: last frame's, in its guard or not.
+        const FighterState state = b.fighter->state();
+        user.set_opponent(b.fighter->part_position(BodyPart::head), b.fighter->part_position(BodyPart::chest),
+                          state != FighterState::strike && state != FighterState::recover);
         const Eigen::Vector3d head = user.head(t);
         b.fighter->step(t, &head);
         for (const FighterEvent& event : b.fighter->events()) b.events.push_back(event);
@@ -84,6 +88,12 @@ TEST_CASE("fighter: predicted aim hits a walking user, latched aim does not, nei
     CHECK(dodged_unsteered.strikes == 15);
     CHECK(dodged_unsteered.hits <= 0.1 * dodged_unsteered.strikes);
     CHECK(dodged.hits <= 0.2 * dodged.strikes);
+    // A dodger that moves 0.25 s after it sees the strike begin, as a person in the room can: the strike's 0.33-0.5 s
+    // to its contact leave it time, steered or not.
+    const Tally seen(bout(content->view(), SimulatedKind::dodge_seen, 3, "brawler", predicted));
+    INFO("dodge-seen: " << seen.hits << "/" << seen.strikes);
+    CHECK(seen.strikes == 15);
+    CHECK(seen.hits <= 0.2 * seen.strikes);
 }
 
 TEST_CASE("fighter: a punching user's strikes are blocked or slipped with defence on and land with it off", "[runtime][corpus]") {

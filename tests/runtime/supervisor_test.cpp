@@ -240,3 +240,27 @@ TEST_CASE("simulated hands: a countering user punches only in reply to the fight
     REQUIRE(first_arrival > 4.0);
     CHECK(first_arrival < 4.0 + 0.3 + SimulatedHands::k_draw_s + 0.3);
 }
+
+TEST_CASE("simulated user: dodge-seen dodges 0.25 s after the fighter leaves its guard, not at the order", "[runtime]") {
+    SimulatedUser user(SimulatedKind::dodge_seen, 1);
+    const Eigen::Vector3d fighter_head(0.0, 1.7, 0.3), fighter_chest(0.0, 1.35, 0.25), start = SimulatedUser::start_position();
+    double moved_from = -1.0, out_by = -1.0;
+    for (int frame = 0; frame < 60 * 5; ++frame) {
+        const double t = frame / 60.0;
+        if (frame == 60) user.on_order(t);                  // an order at 1 s: nothing to see yet
+        const bool guarding = !(t >= 2.0 && t < 2.6);       // the strike begins at 2 s
+        user.set_opponent(fighter_head, fighter_chest, guarding);
+        const double off = (user.head(t) - start).norm();
+        if (off > 1e-6 && moved_from < 0.0) moved_from = t;
+        if (off > 0.44 && out_by < 0.0) out_by = t;
+    }
+    // The first dodge is a duck of 0.45 m, begun 0.25 s after the frame that last saw the guard, out in 0.15 s.
+    CHECK(moved_from > 2.2);
+    CHECK(moved_from <= 2.25 + 1e-9);
+    CHECK(out_by <= 2.45);
+    // The order-keyed dodger moves at the order instead.
+    SimulatedUser keyed(SimulatedKind::dodge, 1);
+    keyed.on_order(1.0);
+    CHECK((keyed.head(1.3) - start).norm() > 0.01);
+    CHECK((keyed.head(1.2) - start).norm() < 1e-9);
+}

@@ -68,7 +68,7 @@ typedef struct kumite_bout_options {
     const char* character;      /* a character of characters_dir by name, or a .bvh/.glb/.gltf path; NULL: the first */
     const char* characters_dir; /* NULL: $KUMITE_CHARACTERS_DIR, else kumite's data/characters */
     const char* tracker;        /* NULL: the caller feeds the user (kumite_bout_set_user); else a source as
-                                   `kumite play --tracker` takes it: simulate:still|wander|walk[:SPEED]|dodge|punch,
+                                   `kumite play --tracker` takes it: simulate:still|wander|walk[:SPEED]|dodge|dodge-seen|punch,
                                    replay:FILE.csv, capture:FILE.bvh[:DISTANCE[:START_S]], dtrack:PORT[...] */
     int fighters;               /* side by side against the same user; default 1 */
     int aim;                    /* kumite_aim; default KUMITE_AIM_LATCHED */

@@ -2,7 +2,7 @@
 // The user's head, from whichever source the room has (ARCHITECTURE.md "Inputs from the room"), behind one
 // interface: `dtrack:PORT[:HEAD[,LEFT,RIGHT]]` (A.R.T. DTrack UDP, live; the hands are 6d bodies or 3d markers
 // by id), `replay:FILE` (a CSV of t,x,y,z[,lx,ly,lz,rx,ry,rz]), `capture:FILE.bvh[:DISTANCE[:START_S]]` (a recorded
-// person: capture_user.h), or `simulate:still|wander|walk[:SPEED]|dodge|punch|counter|FILE` (a simulated or scripted
+// person: capture_user.h), or `simulate:still|wander|walk[:SPEED]|dodge|dodge-seen|punch|counter|FILE` (a simulated or scripted
 // user, deterministic with the seed). The user's hands come with the head, when tracked.
 
 #include "kumite/runtime/capture_user.h"

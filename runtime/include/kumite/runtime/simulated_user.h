@@ -5,6 +5,9 @@
 //   wander — walks slowly (0.4 m/s) between random points of a 3 m x 3 m room centred on its start.
 //   walk   — the same at a given speed (default 0.8 m/s; `simulate:walk:1.2`), legs at least 1.5 m long.
 //   dodge  — like still, but 0.25 s after each order ducks 0.45 m or sidesteps 0.5 m (alternately) for 1 s.
+//   dodge-seen — the same dodges, 0.25 s after the fighter's strike begins (its guard left): what a person in the
+//            room can react to. `dodge` keys on the order, which no one in the room sees: it dodges before a strike
+//            the fighter begins later than 0.15 s after the order, and so its figure measures that delay too.
 //   punch  — like still, with tracked hands that punch at the fighter from t = 3 s every 1.6-2.4 s: straight
 //            punches from 0.6-1.0 m, left and right in turn, at the head twice then the chest twice, at 4-8 m/s.
 //   counter — like still, with tracked hands that reply: 0.3 s after each of the fighter's strikes, as it comes
@@ -25,7 +28,7 @@
 
 namespace kumite {
 
-enum class SimulatedKind { still, wander, walk, dodge, punch, counter };
+enum class SimulatedKind { still, wander, walk, dodge, dodge_seen, punch, counter };
 std::optional<SimulatedKind> simulated_kind_from_name(std::string_view name);
 
 class SimulatedUser {
@@ -36,10 +39,7 @@ public:
     void on_order(double t_s);        // the supervisor gave an order at t
     // Where the fighter's head and chest are and whether it is in its guard (before head(t)), and the hands at t
     // (after it).
-    void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest, bool guarding = true) {
-        m_hands.set_opponent(head, chest);
-        m_opponent_guarding = guarding;
-    }
+    void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest, bool guarding = true);
     UserHands hands(double t_s);
 
     static constexpr double k_head_height_m = 1.65;
@@ -52,15 +52,16 @@ private:
     // wander: the current leg of the walk
     Eigen::Vector3d m_from = start_position(), m_to = start_position();
     double m_leg_start_s = 0.0, m_leg_end_s = 0.0;
-    // dodge: the current move
+    // dodge: the current move; dodge-seen: when the fighter was last seen (the last head(t))
     double m_dodge_start_s = -1e9;
+    double m_seen_s = 0.0;
     int m_dodges = 0;
     // punch: the hands and the next punch
     SimulatedHands m_hands;
     Eigen::Vector3d m_last_head = start_position();
     double m_next_punch_s = 3.0;
     int m_punches = 0;
-    bool m_opponent_guarding = true, m_opponent_was_guarding = true; // counter: replies when the guard comes back
+    bool m_opponent_guarding = true, m_opponent_was_guarding = true; // counter: replies when the guard comes back; dodge-seen: dodges when it goes
 };
 
 // A user scripted in a file, one action per line, `<time_s> <action>` ('#' comments), applied in time order:
