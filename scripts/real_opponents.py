@@ -4,7 +4,8 @@ both hands, 1.2 m in front of the fighter, facing it) for the capture's length, 
 alternately, sides alternating), for each character. Prints a table per opponent x character on stderr and one
 JSON document on stdout: strikes and hits, orders performed / queued / expired / ignored, and the opponent's
 strikes at the fighter (seen, blocked, slipped, landed, missed; `overall.on_course`: slips counted only where the hand
-would have hit without them). The overall hit and defended rates come with their
+would have hit without them; `overall.on_course_blocks_too`: blocks too, only where the hand's path after the forearm
+went on to the head or chest). The overall hit and defended rates come with their
 95% Wilson intervals (`hit_rate_ci95`, `defended_rate_ci95`): two settings whose rates differ by less than that may
 differ by chance (the order of blows, a strike a frame later), not by what was changed.
 
@@ -131,6 +132,7 @@ def main():
                          "ignored": report["ignored_orders"], "strikes": report["strikes"], "hits": report["hits"],
                          "user_seen": user["seen"], "blocked": user["blocked"], "slipped": user["slipped"],
                          "slipped_on_course": user.get("slipped_on_course", user["slipped"]),
+                         "blocked_on_course": user.get("blocked_on_course", user["blocked"]),
                          "blocks": user["blocks"], "slips": user.get("slips", 0), "block_clips": user.get("block_clips", 0),
                          "landed": user["hit_by_user"], "user_missed": user["missed"],
                          "by_fighter_state": user.get("by_fighter_state", {}),
@@ -174,6 +176,13 @@ def main():
     # have been without it: a slip starts for any course within the threat radius, and one that would have missed anyway
     # is no blow defended.
     on_course = {"defended": sum(row["blocked"] + row["slipped_on_course"] for row in rows)}
+    # Stricter still: a block too only where the hand's course went on to the head or chest (a forearm held in the
+    # guard also stops hands that would have passed wide).
+    strict = {"defended": sum(row["blocked_on_course"] + row["slipped_on_course"] for row in rows)}
+    strict["would_land"] = strict["defended"] + sum(row["landed"] for row in rows)
+    strict["defended_rate"] = rate(strict["defended"], strict["would_land"])
+    strict["defended_rate_ci95"] = wilson_95(strict["defended"], strict["would_land"])
+    overall["on_course_blocks_too"] = strict
     on_course["would_land"] = on_course["defended"] + sum(row["landed"] for row in rows)
     on_course["defended_rate"] = rate(on_course["defended"], on_course["would_land"])
     on_course["defended_rate_ci95"] = wilson_95(on_course["defended"], on_course["would_land"])
@@ -188,6 +197,7 @@ def main():
     print(f"overall: hits {fmt(overall['hits'], overall['strikes'])}{interval(overall['hit_rate_ci95'])}, "
           f"defended {fmt(overall['defended'], overall['would_land'])}{interval(overall['defended_rate_ci95'])}, "
           f"slips on course only {fmt(on_course['defended'], on_course['would_land'])}{interval(on_course['defended_rate_ci95'])}, "
+          f"blocks too {fmt(strict['defended'], strict['would_land'])}{interval(strict['defended_rate_ci95'])}, "
           f"captured blocks {fmt(overall['block_clips'], overall['blocks'])}; "
           f"worst hits {worst_hits[0]}, worst defence {worst_defence[0]}", file=sys.stderr)
     # Motion (issue 44): speed at contact by kind, the fastest joints by move against the library's, the distance kept.

@@ -140,7 +140,7 @@ nlohmann::json play_report_json(const Bout& bout) {
             {"user_strikes",
              {{"seen", counters.user_strikes}, {"blocks", counters.blocks}, {"block_clips", counters.block_clips},
               {"synthesized", counters.blocks - counters.block_clips}, {"slips", counters.slips}, {"blocked", counters.blocked},
-              {"slipped", counters.slipped}, {"slipped_on_course", counters.slipped_on_course}, {"hit_by_user", counters.hit_by_user},
+              {"slipped", counters.slipped}, {"slipped_on_course", counters.slipped_on_course}, {"blocked_on_course", counters.blocked_on_course}, {"hit_by_user", counters.hit_by_user},
               {"missed", counters.user_missed},
               {"forearm_to_path_m", quantiles_of(counters.forearm_to_path_m)},
               {"arm_speed_mps",

@@ -246,6 +246,9 @@ void Bout::step(double t_s) {
                 m_counters.defence_joint_limit_violations += event.joint_limit_violations;
                 m_counters.defence_foot_shift_m = std::max(m_counters.defence_foot_shift_m, event.foot_shift_m);
                 break;
+            case FighterEvent::Type::user_strike_course:
+                m_counters.blocked_on_course += event.user_strike.unblocked_clearance_m <= 0.0;
+                break;
             case FighterEvent::Type::hit_reaction:
                 ++m_counters.hit_reactions;
                 m_counters.hit_reaction_blows += event.reaction_blows;

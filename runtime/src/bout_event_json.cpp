@@ -99,6 +99,12 @@ nlohmann::json event_object(const Bout& bout, const BoutEvent& bout_event) {
         line["joint_limit_violations"] = event.joint_limit_violations;
         line["foot_shift_m"] = event.foot_shift_m;
         break;
+    case FighterEvent::Type::user_strike_course: // a blocked strike's path, followed on after the forearm
+        line["hand"] = event.user_strike.hand == 0 ? "left" : "right";
+        line["aimed_at"] = event.user_strike.at_head ? "head" : "chest";
+        line["unblocked_clearance_m"] = event.user_strike.unblocked_clearance_m;
+        line["on_course"] = event.user_strike.unblocked_clearance_m <= 0.0;
+        break;
     case FighterEvent::Type::hit_reaction:
         line["hand"] = event.user_strike.hand == 0 ? "left" : "right";
         line["aimed_at"] = event.user_strike.at_head ? "head" : "chest";

@@ -59,7 +59,10 @@ double segment_distance(const Eigen::Vector3d& a0, const Eigen::Vector3d& a1, co
 }
 
 void Defence::reset() {
-    for (Hand& hand : m_hands) hand = Hand{};
+    for (Hand& hand : m_hands) {
+        if (hand.watching) end_watch(hand);
+        hand = Hand{};
+    }
     m_move = DefenceMove::none;
     m_move_hand = -1;
     m_weight = 0.0;
@@ -87,6 +90,34 @@ bool Defence::body_met(const Eigen::Vector3d& before, const Eigen::Vector3d& now
            segment_distance(before, now, body.chest, body.chest) <= m_settings.chest_radius_m;
 }
 
+double Defence::course_clearance(const Eigen::Vector3d& from, const Eigen::Vector3d& velocity, const DefenderBody& body) const {
+    constexpr double k_course_m = 0.5; // a fist's last stretch: a course is not followed past an arm's travel
+    const double speed = velocity.norm();
+    if (speed <= 1e-9) return 1e9;
+    const Eigen::Vector3d to = from + velocity * (k_course_m / speed);
+    return std::min(segment_distance(from, to, body.head, body.head) - m_settings.head_radius_m,
+                    segment_distance(from, to, body.chest, body.chest) - m_settings.chest_radius_m);
+}
+
+void Defence::watch_blocked(double t_s, Hand& hand, const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body) {
+    constexpr double k_watch_s = 0.3;
+    UserStrikeEvent& event = hand.watched;
+    event.unblocked_clearance_m = std::min({event.unblocked_clearance_m, segment_distance(before, now, body.head, body.head) - m_settings.head_radius_m,
+                                           segment_distance(before, now, body.chest, body.chest) - m_settings.chest_radius_m});
+    hand.watch_receding_frames = hand.velocity.dot(body.chest - now) < 0.0 ? hand.watch_receding_frames + 1 : 0;
+    if (hand.watch_receding_frames >= 3 || t_s - event.t_s >= k_watch_s) {
+        event.t_s = t_s;
+        end_watch(hand);
+    }
+}
+
+void Defence::end_watch(Hand& hand) {
+    hand.watching = false;
+    hand.watched.ended = false;
+    hand.watched.course_followed = true;
+    push(hand.watched);
+}
+
 void Defence::end_strike(double t_s, Hand& hand, UserStrikeOutcome outcome) {
     UserStrikeEvent event = hand.strike;
     event.ended = true;
@@ -95,6 +126,12 @@ void Defence::end_strike(double t_s, Hand& hand, UserStrikeOutcome outcome) {
     event.hand_velocity = hand.velocity;
     event.forearm_to_path_m = is_block(event.move) ? hand.closest_forearm_m : -1.0;
     push(event);
+    if (hand.watching) end_watch(hand); // an earlier block's, still followed
+    if (outcome == UserStrikeOutcome::blocked) {
+        hand.watching = true;
+        hand.watched = event;
+        hand.watch_receding_frames = 0;
+    }
     hand.striking = false;
     hand.armed = false;
     // A hand that met the fighter or a forearm stays on it a moment: not a new strike until it has left.
@@ -234,6 +271,7 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
         Hand& hand = m_hands[side];
         if (!hands.present[side]) {
             if (hand.striking) end_strike(t_s, hand, hand.strike.move == DefenceMove::slip ? UserStrikeOutcome::slipped : UserStrikeOutcome::missed);
+            if (hand.watching) end_watch(hand);
             hand.seen = false;
             continue;
         }
@@ -243,6 +281,7 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
         const bool jumped = hand.seen && (now - hand.position).norm() > m_settings.max_hand_speed_mps * std::max(t_s - hand.last_s, 1.0 / 120.0);
         if (jumped && hand.striking) end_strike(t_s, hand, hand.strike.move == DefenceMove::slip ? UserStrikeOutcome::slipped : UserStrikeOutcome::missed);
         if (!hand.seen || t_s - hand.last_s > 0.25 || jumped) {
+            if (hand.watching) end_watch(hand);
             hand = Hand{};
             hand.seen = true;
             hand.position = now;
@@ -255,6 +294,7 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
         hand.velocity = 0.3 * hand.velocity + 0.7 * (now - before) / dt;
         hand.position = now;
         hand.last_s = t_s;
+        if (hand.watching) watch_blocked(t_s, hand, before, now, body);
 
         if (hand.striking) {
             // Its path this frame against the blocking forearm, the head and the chest.
@@ -299,6 +339,7 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
             // Any forearm on the path stops it: the blocking one, or the other held in the guard.
             if (const int arm = forearm_met(before, now, body); arm >= 0) {
                 hand.strike.blocking_arm = arm;
+                hand.strike.unblocked_clearance_m = course_clearance(before, hand.velocity, body);
                 end_strike(t_s, hand, UserStrikeOutcome::blocked);
                 continue;
             }
@@ -332,6 +373,7 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
             hand.strike.hand_speed_mps = speed;
             hand.strike.detected = false;
             hand.strike.blocking_arm = forearm;
+            if (forearm >= 0) hand.strike.unblocked_clearance_m = course_clearance(before, hand.velocity, body);
             push(hand.strike);
             end_strike(t_s, hand, forearm >= 0 ? UserStrikeOutcome::blocked : UserStrikeOutcome::hit_by_user);
             continue;

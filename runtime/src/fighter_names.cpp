@@ -47,6 +47,7 @@ const char* fighter_event_name(FighterEvent::Type type) {
     case FighterEvent::Type::character: return "character";
     case FighterEvent::Type::user_strike: return "user_strike";
     case FighterEvent::Type::user_strike_end: return "user_strike_end";
+    case FighterEvent::Type::user_strike_course: return "user_strike_course";
     case FighterEvent::Type::order_queued: return "order_queued";
     case FighterEvent::Type::order_performed: return "order_performed";
     case FighterEvent::Type::order_expired: return "order_expired";

@@ -88,7 +88,9 @@ TEST_CASE("defence: a punch at the head is blocked with the arm on its side; wit
     const Eigen::Vector3d from(-0.15, 1.45, 0.8), to(0.0, 1.6, 0.0);
     Defence defence;
     const std::vector<UserStrikeEvent> events = thrust(defence, 0, from, to, 6.0, true);
-    REQUIRE(events.size() == 2);
+    REQUIRE(events.size() == 3); // seen, blocked, the path after the forearm
+    CHECK(events[2].course_followed);
+    CHECK(events[2].unblocked_clearance_m <= 0.0); // at the head: it would have landed
     CHECK_FALSE(events[0].ended);
     CHECK(events[0].at_head);
     CHECK(events[0].move == DefenceMove::synthesized);
@@ -124,7 +126,7 @@ TEST_CASE("defence: a fist faster than first seen: the forearm is in place a fra
             weight_before_meeting = defence.block_weight();
         }
     });
-    REQUIRE(events.size() == 2);
+    REQUIRE(events.size() == 3); // seen, blocked, the path after the forearm
     CHECK(events[0].move == DefenceMove::synthesized);
     CHECK(events[0].hand_speed_mps < 4.0); // seen early, while it speeds up
     CHECK(weight_before_meeting == Approx(1.0));
@@ -193,7 +195,8 @@ TEST_CASE("defence: a hand that arrives unseen is counted; a forearm held in the
     high_guard.wrist[0] = Eigen::Vector3d(-0.1, 1.65, 0.2);
     Defence off(DefenceSettings{.enabled = false});
     const auto guarded = follow(off, straight(Eigen::Vector3d(0.0, 1.6, 0.8), Eigen::Vector3d(0.0, 1.6, 0.0), 6.0), high_guard);
-    REQUIRE(guarded.size() == 2);
+    REQUIRE(guarded.size() == 3); // seen, blocked, and the path after the forearm (it would have landed)
+    CHECK(guarded[2].unblocked_clearance_m <= 0.0);
     CHECK(guarded[0].detected);
     CHECK(guarded[0].move == DefenceMove::none);
     CHECK(guarded[1].outcome == UserStrikeOutcome::blocked);
@@ -296,4 +299,30 @@ TEST_CASE("defence: a slip is counted as keeping a blow off only where the hand 
     CHECK(beside.move == DefenceMove::slip);
     CHECK(beside.outcome == UserStrikeOutcome::slipped);
     CHECK(beside.unslipped_clearance_m == Approx(0.22 - Defence{}.settings().head_radius_m).margin(0.02)); // it would have missed anyway
+}
+
+TEST_CASE("defence: a block is counted as keeping a blow off only where the hand's path went on to the head or chest", "[runtime]") {
+    // A high guard's left forearm across the face, no defence move; a punch at 6 m/s from 0.8 m in front, straight
+    // through the head, or 0.2 m beside it (through the forearm, wide of the head): both are blocked, and the hand
+    // goes on (nothing stops a tracked hand at a virtual arm) to where the path says whether it would have landed.
+    DefenderBody high_guard = guard_body();
+    high_guard.elbow[0] = Eigen::Vector3d(0.35, 1.6, 0.2);
+    high_guard.wrist[0] = Eigen::Vector3d(-0.25, 1.6, 0.2);
+    const auto blocked = [&](double beside_m) {
+        Defence off(DefenceSettings{.enabled = false});
+        const auto events = follow(off, straight(Eigen::Vector3d(beside_m, 1.6, 0.8), Eigen::Vector3d(beside_m, 1.6, -0.3), 6.0), high_guard);
+        // Seen, ended blocked at the forearm (0.6 m from the start at 6 m/s), then its path told.
+        REQUIRE(events.size() == 3);
+        CHECK(events[1].ended);
+        CHECK(events[1].outcome == UserStrikeOutcome::blocked);
+        CHECK(events[1].t_s == Approx(0.2 + 0.6 / 6.0).margin(1.5 / 60.0));
+        CHECK(events[2].course_followed);
+        CHECK_FALSE(events[2].ended);
+        CHECK(events[2].t_s > events[1].t_s);
+        CHECK(events[2].t_s <= events[1].t_s + 0.3 + 1e-9);
+        return events[2];
+    };
+    const UserStrikeEvent through = blocked(0.0), beside = blocked(0.2);
+    CHECK(through.unblocked_clearance_m <= 0.0); // it would have landed: the forearm kept it off
+    CHECK(beside.unblocked_clearance_m == Approx(0.2 - Defence{}.settings().head_radius_m).margin(0.02)); // wide anyway
 }

@@ -67,7 +67,9 @@ void FighterDefence::defend(double t_s, double shown_s, const UserHands& hands, 
     if (m_defence.block_started()) m_block_arm.start(m_defence, anatomy, defender, body.mir(), body.heading().yaw_rad, t_s);
     for (const UserStrikeEvent& seen : m_defence.events()) {
         FighterEvent event;
-        event.type = seen.ended ? FighterEvent::Type::user_strike_end : FighterEvent::Type::user_strike;
+        event.type = seen.course_followed ? FighterEvent::Type::user_strike_course
+                     : seen.ended           ? FighterEvent::Type::user_strike_end
+                                            : FighterEvent::Type::user_strike;
         event.t_s = t_s;
         event.user_strike = seen;
         if (seen.ended && seen.outcome == UserStrikeOutcome::hit_by_user) {

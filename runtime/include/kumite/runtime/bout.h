@@ -68,6 +68,7 @@ struct BoutCounters {
     // The user's strikes at the fighter: how each ended, and how close a blocked one's path came to the forearm.
     long long user_strikes = 0, blocked = 0, slipped = 0, hit_by_user = 0, user_missed = 0, blocks = 0, slips = 0;
     long long slipped_on_course = 0; // slipped strikes whose path passed within the hit radius of the part unslipped
+    long long blocked_on_course = 0; // blocked strikes whose course went on to the head or chest
     long long block_clips = 0; // of the blocks, captured ones (block_clips.h); the rest synthesized
     std::array<std::array<long long, 4>, 2> user_outcomes_by_target{}; // [head, chest][UserStrikeOutcome]
     // ... by what the fighter was doing when each ended (FighterState: resting, stepping, striking, in a hit

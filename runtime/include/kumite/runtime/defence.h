@@ -98,6 +98,13 @@ struct UserStrikeEvent {
     // without the lean (the head by the slip's offset as shown, the chest by half of it); <= 0: the slip is what kept
     // it off, > 0: it would have missed anyway (a slip is started for any course within threat_radius_m).
     double unslipped_clearance_m = 1e9;
+    // Blocked: how far outside the hit radius of the head or chest the hand passed after the forearm met it (nothing
+    // stops a tracked hand at a virtual forearm: its path goes on, and is followed until it draws back, for 0.3 s at
+    // most), or its straight course would have, for half a metre: <= 0: the block kept it off, > 0: it would have
+    // missed anyway (a forearm held in the guard also stops hands that pass wide). Told by an event of its own once
+    // the path has been followed (`course_followed`: not `ended`, the outcome `blocked`, the time then).
+    double unblocked_clearance_m = 1e9;
+    bool course_followed = false;
 };
 
 // The distance between segments [a0, a1] and [b0, b1].
@@ -164,11 +171,21 @@ private:
         double closest_forearm_m = 1e9;
         int receding_frames = 0;
         bool touching = false;       // met the fighter unseen, and has not left it since
+        // A blocked strike whose path is followed on (unblocked_clearance_m) before its end is told.
+        bool watching = false;
+        UserStrikeEvent watched;
+        int watch_receding_frames = 0;
     };
     // The forearm (0 left, 1 right) the hand's path from `before` to `now` meets, or -1.
     int forearm_met(const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body) const;
     // Whether the path meets the head or the chest.
     bool body_met(const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body) const;
+    // How far outside the head's or chest's hit radius a course from `from` along `velocity` passes (UserStrikeEvent::
+    // unblocked_clearance_m).
+    double course_clearance(const Eigen::Vector3d& from, const Eigen::Vector3d& velocity, const DefenderBody& body) const;
+    // A blocked strike's path after the forearm: followed, then its end told.
+    void watch_blocked(double t_s, Hand& hand, const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body);
+    void end_watch(Hand& hand);
     void push(const UserStrikeEvent& event);
     void start_move(double t_s, Hand& hand, const DefenderBody& body, double time_to_impact, const Allowed& allowed);
     // Where the blocking wrist should go to meet the hand's course in time, and with which arm (the one on the side

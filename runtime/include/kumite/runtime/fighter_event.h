@@ -21,7 +21,7 @@ struct FighterEvent {
     // order_expired (it waited order_wait_s, or a later order took its place); it starts as order (taken at once)
     // or order_queued (waiting).
     enum class Type { order, ignored_order, state, strike, strike_end, tracker_lost, tracker_back, character, user_strike, user_strike_end,
-                      order_queued, order_performed, order_expired, hit_reaction };
+                      order_queued, order_performed, order_expired, hit_reaction, user_strike_course };
     Type type = Type::state;
     double t_s = 0.0;
     FighterState state = FighterState::rest; // state events: the new state
