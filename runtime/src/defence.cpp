@@ -162,7 +162,15 @@ bool Defence::block_plan(const Hand& hand, const DefenderBody& body, double time
     return false;
 }
 
+bool Defence::block_is_over() const {
+    return m_settings.hand_over_blocks && is_block(m_move) && m_move_hand >= 0 && !m_hands[m_move_hand].striking;
+}
+
 void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, double time_to_impact, const Allowed& allowed) {
+    // A block handed over (block_is_over): the same arm goes on from the weight it has.
+    const bool same_arm_blocking = is_block(m_move);
+    const int blocking_arm = m_arm;
+    const double blocking_weight = m_weight;
     Eigen::Vector3d wrist_target;
     int arm = 0;
     m_block_before_m = m_settings.block_before_m;
@@ -195,7 +203,7 @@ void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, doubl
     }
     m_move_start_s = t_s;
     m_ramp_start_s = t_s;
-    m_ramp_from = 0.0;
+    m_ramp_from = same_arm_blocking && is_block(m_move) && blocking_arm == m_arm ? blocking_weight : 0.0;
     m_hold_until_s = t_s + time_to_impact + m_settings.hold_s;
     m_move_hand = static_cast<int>(&hand - m_hands.data());
     hand.strike.move = m_move;
@@ -410,7 +418,7 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
         hand.strike.at_head = aimed == 0;
         hand.strike.time_to_impact_s = best_time;
         hand.strike.hand_speed_mps = speed;
-        if (m_settings.enabled && allowed.any() && m_move == DefenceMove::none) start_move(t_s, hand, body, best_time, allowed);
+        if (m_settings.enabled && allowed.any() && (m_move == DefenceMove::none || block_is_over())) start_move(t_s, hand, body, best_time, allowed);
         push(hand.strike);
     }
 }

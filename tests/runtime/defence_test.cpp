@@ -326,3 +326,52 @@ TEST_CASE("defence: a block is counted as keeping a blow off only where the hand
     CHECK(through.unblocked_clearance_m <= 0.0); // it would have landed: the forearm kept it off
     CHECK(beside.unblocked_clearance_m == Approx(0.2 - Defence{}.settings().head_radius_m).margin(0.02)); // wide anyway
 }
+
+TEST_CASE("defence: a combination's second blow gets a block once the first block's blow is over, not one move at a time", "[runtime]") {
+    // A one-two at the head from 0.8 m at 6 m/s: the user's left hand at 0.2 s, the right 0.25 s later. The fighter's
+    // blocking forearm is put where the defence asks (wrist at the target, elbow 0.25 m below), the other in the guard.
+    const auto one_two = [](bool hand_over) {
+        DefenceSettings settings;
+        settings.hand_over_blocks = hand_over;
+        Defence defence(settings);
+        const auto left = straight(Eigen::Vector3d(-0.15, 1.45, 0.8), Eigen::Vector3d(0.0, 1.6, -0.2), 6.0);
+        const auto right_path = straight(Eigen::Vector3d(0.15, 1.45, 0.8), Eigen::Vector3d(0.0, 1.6, -0.2), 6.0);
+        std::vector<UserStrikeEvent> events;
+        for (int frame = 0; frame < 60; ++frame) {
+            const double t = frame / 60.0;
+            DefenderBody body = guard_body();
+            if (defence.block_weight() > 0.0) {
+                const int arm = defence.block_arm();
+                body.wrist[arm] += defence.block_weight() * (defence.block_wrist_target() - body.wrist[arm]);
+                body.elbow[arm] = body.wrist[arm] - Eigen::Vector3d(0.0, 0.25, 0.0);
+            }
+            UserHands hands;
+            hands.present = {true, true};
+            hands.world[0] = left(t);
+            hands.world[1] = right_path(t - 0.25);
+            defence.update(t, hands, body, true);
+            for (const UserStrikeEvent& event : defence.events()) events.push_back(event);
+            defence.clear_events();
+        }
+        return events;
+    };
+    const auto outcome_of = [](const std::vector<UserStrikeEvent>& events, int hand) {
+        const UserStrikeEvent* seen = nullptr;
+        const UserStrikeEvent* ended = nullptr;
+        for (const UserStrikeEvent& event : events) {
+            if (event.hand != hand || event.course_followed) continue;
+            (event.ended ? ended : seen) = &event;
+        }
+        REQUIRE(seen);
+        REQUIRE(ended);
+        return std::pair(seen->move, ended->outcome);
+    };
+    const auto handed = one_two(true), held = one_two(false);
+    CHECK(outcome_of(handed, 0) == std::pair(DefenceMove::synthesized, UserStrikeOutcome::blocked));
+    CHECK(outcome_of(held, 0) == std::pair(DefenceMove::synthesized, UserStrikeOutcome::blocked));
+    // Handed over, the second blow is blocked too; one move at a time, the first block is still held and released
+    // when it comes: no move, and it lands.
+    CHECK(outcome_of(handed, 1) == std::pair(DefenceMove::synthesized, UserStrikeOutcome::blocked));
+    CHECK(outcome_of(held, 1).first == DefenceMove::none);
+    CHECK(outcome_of(held, 1).second == UserStrikeOutcome::hit_by_user);
+}
