@@ -74,6 +74,7 @@ struct FighterCounts {
     long long strikes = 0, hits = 0;
     long long user_strikes = 0, blocked = 0, slipped = 0, landed = 0, missed = 0, unfinished = 0, unseen = 0, blocks = 0, slips = 0,
               block_clips = 0;
+    long long kept_off = 0; // blocked or slipped where the hand would have landed (on course)
     long long hit_reactions = 0, captured_hit_reactions = 0, hit_reaction_blows = 0;
     long long losses = 0;
     double lost_s = 0.0;
@@ -99,6 +100,7 @@ FighterCounts count(const FighterLog& fighter, double duration_s) {
         c.slips += strike.move == "slip";
         c.blocks += strike.move == "block" || strike.move == "block_clip" || strike.move == "synthesized";
         c.block_clips += strike.move == "block_clip";
+        c.kept_off += strike.kept_off;
     }
     c.hit_reactions = fighter.hit_reactions;
     c.captured_hit_reactions = fighter.captured_hit_reactions;
@@ -143,6 +145,7 @@ std::string user_table(const FighterCounts& c) {
            count_row("landed on the fighter", c.landed, "n-landed", c.user_strikes) + count_row("missed", c.missed, "n-missed", c.user_strikes) +
            (c.unfinished ? count_row("not ended when the events did", c.unfinished, "n-unfinished") : std::string()) +
            count_row("defended of those that would land", defended, "n-defended", defended + c.landed) +
+           count_row("... counting only blocks and slips of blows on course", c.kept_off, "n-kept-off", c.kept_off + c.landed) +
            count_row("not seen coming", c.unseen, "n-unseen") + count_row("defences: blocks", c.blocks, "n-blocks") +
            count_row("of those, captured blocks", c.block_clips, "n-block-clips", c.blocks) +
            count_row("defences: slips", c.slips, "n-slips") +

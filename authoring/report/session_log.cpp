@@ -101,7 +101,7 @@ bool SessionLog::add(const nlohmann::json& line) {
     }
     static const char* const k_fighter_types[] = {"order", "order_queued", "order_performed", "order_expired", "ignored_order", "strike",
                                                   "strike_end", "user_strike", "user_strike_end", "character", "tracker_lost",
-                                                  "tracker_back", "fighter_position", "state", "hit_reaction"};
+                                                  "tracker_back", "fighter_position", "state", "hit_reaction", "user_strike_course"};
     if (std::none_of(std::begin(k_fighter_types), std::end(k_fighter_types), [&](const char* known) { return type == known; })) {
         ++unknown_lines;
         return true;
@@ -167,7 +167,15 @@ bool SessionLog::add(const nlohmann::json& line) {
         strike->outcome = text(line, "outcome");
         strike->detected = flag(line, "detected", strike->detected);
         if (strike->outcome.empty()) strike->outcome = "unknown";
+        strike->kept_off = strike->outcome == "slipped" && number_or(line, "unslipped_clearance_m", 1.0) <= 0.0;
+        m_last_ended[index][hand == "left" ? 0 : 1] = static_cast<std::size_t>(strike - log.user_strikes.data()) + 1;
         log.joint_limit_violations += static_cast<long long>(std::max(0.0, number_or(line, "joint_limit_violations", 0.0)));
+    } else if (type == "user_strike_course") {
+        // A blocked strike's path, followed on: it would have landed (on_course) or passed wide.
+        const std::size_t last = m_last_ended[index][text(line, "hand") == "left" ? 0 : 1]; // its index + 1; 0: none
+        if (last > 0 && last <= log.user_strikes.size() && log.user_strikes[last - 1].outcome == "blocked") {
+            log.user_strikes[last - 1].kept_off = flag(line, "on_course", false);
+        }
     } else if (type == "hit_reaction") {
         ++log.hit_reactions;
         const auto clip = line.find("clip");

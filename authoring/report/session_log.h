@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -51,6 +52,8 @@ struct UserStrikeRecord {
     double seen_s = -1.0, end_s = -1.0; // -1: that event is missing
     std::string hand, aimed_at, move, outcome; // outcome empty: the strike had not ended when the events did
     bool detected = true;
+    // Blocked or slipped, and the hand would have landed without it (its course event, its unslipped clearance).
+    bool kept_off = false;
 };
 
 struct TrackerLoss {
@@ -96,6 +99,8 @@ private:
     bool stop(std::string why);
     FighterLog& fighter(int index) { return fighters[index]; }
     std::map<int, std::vector<std::size_t>> m_open_user_strikes; // per fighter: user strikes seen, not yet ended
+    // per fighter and hand (left, right): the user strike that ended last, as its index + 1 (0: none), for its course event
+    std::map<int, std::array<std::size_t, 2>> m_last_ended;
 };
 
 // Reads an events file. An error only when the file cannot be opened; a bad line ends the reading (`stopped`, with

@@ -127,6 +127,9 @@ TEST_CASE("cli: report and play --html draw the bout's events, counts equal to t
         CHECK(summary_count(html, "n-blocked") == outcomes["blocked"]);
         CHECK(summary_count(html, "n-slipped") == outcomes["slipped"]);
         CHECK(summary_count(html, "n-landed") == outcomes["hit_by_user"]);
+        // Blocks and slips of blows that would have landed, as the report counts them.
+        CHECK(summary_count(html, "n-kept-off") ==
+              report["user_strikes"]["blocked_on_course"].get<long long>() + report["user_strikes"]["slipped_on_course"].get<long long>());
         // Every strike that landed is answered by a hit reaction (the last may land as the bout ends).
         CHECK(summary_count(html, "n-hit-reactions") == types["hit_reaction"]);
         CHECK(summary_count(html, "n-reaction-blows") == report["hit_reactions"]["blows_answered"].get<long long>());

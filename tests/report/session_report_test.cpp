@@ -43,7 +43,11 @@ std::vector<nlohmann::json> bout_lines(int strikes) {
                          {"effector_speed_at_contact_mps", 4.0 + i}});
         lines.push_back({{"t", t + 0.6}, {"type", "strike_end"}, {"fighter", 0}, {"overshoot_m", 0.01}, {"joint_limit_violations", 0}});
         lines.push_back({{"t", t + 0.7}, {"type", "user_strike"}, {"fighter", 0}, {"hand", "left"}, {"move", i % 2 ? "slip" : "block"}});
-        lines.push_back({{"t", t + 0.9}, {"type", "user_strike_end"}, {"fighter", 0}, {"hand", "left"}, {"outcome", outcomes[i % 4]}});
+        nlohmann::json end = {{"t", t + 0.9}, {"type", "user_strike_end"}, {"fighter", 0}, {"hand", "left"}, {"outcome", outcomes[i % 4]}};
+        // Every other slip and block was of a blow that would have landed (on course), the rest of ones passing wide.
+        if (i % 4 == 1) end["unslipped_clearance_m"] = i % 8 == 1 ? -0.02 : 0.05;
+        lines.push_back(end);
+        if (i % 4 == 0) lines.push_back({{"t", t + 1.1}, {"type", "user_strike_course"}, {"fighter", 0}, {"hand", "left"}, {"on_course", i % 8 == 0}});
     }
     lines.push_back({{"t", 2.0}, {"type", "ignored_order"}, {"fighter", 0}, {"why", "already striking"}});
     std::stable_sort(lines.begin(), lines.end(), [](const nlohmann::json& a, const nlohmann::json& b) { return a["t"].get<double>() < b["t"].get<double>(); });
@@ -88,6 +92,7 @@ TEST_CASE("report: the summary's counts are the events', one mark per strike in 
     CHECK(summary_count(html, "n-user-strikes") == strikes);
     CHECK(summary_count(html, "n-blocked") == strikes / 4);
     CHECK(summary_count(html, "n-landed") == strikes / 4);
+    CHECK(summary_count(html, "n-kept-off") == 4); // blocks at 0 and 8, slips at 1 and 9 of blows on course
     CHECK(summary_count(html, "n-losses") == 1);
     CHECK(occurrences(html, "class=\"tl-strike hit\"") == strikes / 2);
     CHECK(occurrences(html, "class=\"tl-strike miss\"") == strikes / 2);
