@@ -409,6 +409,9 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
             if (miss <= best_miss) best_miss = miss, best_time = arrival, aimed = part;
         }
         if (aimed < 0) continue;
+        // Before this hand counts as striking again: the block of its own last blow may be the one handed over (a
+        // double jab).
+        const bool free_to_move = m_move == DefenceMove::none || block_is_over();
         hand.striking = true;
         hand.closest_forearm_m = 1e9;
         hand.receding_frames = 0;
@@ -418,7 +421,7 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
         hand.strike.at_head = aimed == 0;
         hand.strike.time_to_impact_s = best_time;
         hand.strike.hand_speed_mps = speed;
-        if (m_settings.enabled && allowed.any() && (m_move == DefenceMove::none || block_is_over())) start_move(t_s, hand, body, best_time, allowed);
+        if (m_settings.enabled && allowed.any() && free_to_move) start_move(t_s, hand, body, best_time, allowed);
         push(hand.strike);
     }
 }

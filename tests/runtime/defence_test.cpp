@@ -375,3 +375,33 @@ TEST_CASE("defence: a combination's second blow gets a block once the first bloc
     CHECK(outcome_of(held, 1).first == DefenceMove::none);
     CHECK(outcome_of(held, 1).second == UserStrikeOutcome::hit_by_user);
 }
+
+TEST_CASE("defence: a double jab's second blow gets a block too, handed over from the same hand's first", "[runtime]") {
+    // The user's left hand at the head from 0.8 m at 6 m/s, drawn back over 0.2 s and thrown again. The blocking
+    // forearm is put where the defence asks, as in the one-two above.
+    const Eigen::Vector3d from(-0.15, 1.45, 0.8), to(0.0, 1.6, -0.2);
+    const double out_s = (to - from).norm() / 6.0;
+    const auto jab = [&](double t) {
+        const double second = 0.2 + out_s + 0.2; // the second thrust starts here
+        if (t < 0.2) return from;
+        if (t < 0.2 + out_s) return Eigen::Vector3d(from + (to - from) * ((t - 0.2) / out_s));
+        if (t < second) return Eigen::Vector3d(to + (from - to) * ((t - 0.2 - out_s) / 0.2));
+        return Eigen::Vector3d(from + (to - from) * std::min(1.0, (t - second) / out_s));
+    };
+    const auto run = [&](bool hand_over) {
+        DefenceSettings settings;
+        settings.hand_over_blocks = hand_over;
+        Defence defence(settings);
+        std::vector<UserStrikeEvent> started;
+        for (const UserStrikeEvent& event : run_hand(defence, 0, jab, true, [](double) {})) {
+            if (!event.ended && !event.course_followed) started.push_back(event);
+        }
+        return started;
+    };
+    const auto handed = run(true), held = run(false);
+    REQUIRE(handed.size() == 2);
+    REQUIRE(held.size() == 2);
+    CHECK(handed[0].move == DefenceMove::synthesized);
+    CHECK(handed[1].move == DefenceMove::synthesized);
+    CHECK(held[1].move == DefenceMove::none); // one move at a time: the first block is still held and released
+}
