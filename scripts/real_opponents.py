@@ -172,21 +172,20 @@ def main():
     overall["defended_rate"] = rate(overall["defended"], overall["would_land"])
     overall["hit_rate_ci95"] = wilson_95(overall["hits"], overall["strikes"])
     overall["defended_rate_ci95"] = wilson_95(overall["defended"], overall["would_land"])
+    def defended_counting(blocked_key, slipped_key):
+        """The defended rate with blocks and slips counted as `blocked_key` and `slipped_key` say."""
+        counted = {"defended": sum(row[blocked_key] + row[slipped_key] for row in rows)}
+        counted["would_land"] = counted["defended"] + sum(row["landed"] for row in rows)
+        counted["defended_rate"] = rate(counted["defended"], counted["would_land"])
+        counted["defended_rate_ci95"] = wilson_95(counted["defended"], counted["would_land"])
+        return counted
+
     # The same, counting a slip only where the hand's path passed within the hit radius of where the head (chest) would
     # have been without it: a slip starts for any course within the threat radius, and one that would have missed anyway
-    # is no blow defended.
-    on_course = {"defended": sum(row["blocked"] + row["slipped_on_course"] for row in rows)}
-    # Stricter still: a block too only where the hand's course went on to the head or chest (a forearm held in the
-    # guard also stops hands that would have passed wide).
-    strict = {"defended": sum(row["blocked_on_course"] + row["slipped_on_course"] for row in rows)}
-    strict["would_land"] = strict["defended"] + sum(row["landed"] for row in rows)
-    strict["defended_rate"] = rate(strict["defended"], strict["would_land"])
-    strict["defended_rate_ci95"] = wilson_95(strict["defended"], strict["would_land"])
-    overall["on_course_blocks_too"] = strict
-    on_course["would_land"] = on_course["defended"] + sum(row["landed"] for row in rows)
-    on_course["defended_rate"] = rate(on_course["defended"], on_course["would_land"])
-    on_course["defended_rate_ci95"] = wilson_95(on_course["defended"], on_course["would_land"])
-    overall["on_course"] = on_course
+    # is no blow defended. Stricter still: a block too only where the hand's path went on to the head or chest (a
+    # forearm held in the guard also stops hands that would have passed wide).
+    on_course = overall["on_course"] = defended_counting("blocked", "slipped_on_course")
+    strict = overall["on_course_blocks_too"] = defended_counting("blocked_on_course", "slipped_on_course")
     worst_hits = min(per_opponent.items(), key=lambda item: item[1]["hit_rate"] if item[1]["hit_rate"] is not None else 2.0)
     worst_defence = min(per_opponent.items(), key=lambda item: item[1]["defended_rate"] if item[1]["defended_rate"] is not None else 2.0)
     print("per opponent:", file=sys.stderr)

@@ -85,25 +85,26 @@ int Defence::forearm_met(const Eigen::Vector3d& before, const Eigen::Vector3d& n
     return -1;
 }
 
+double Defence::body_clearance(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const DefenderBody& body) const {
+    return std::min(segment_distance(a, b, body.head, body.head) - m_settings.head_radius_m,
+                    segment_distance(a, b, body.chest, body.chest) - m_settings.chest_radius_m);
+}
+
 bool Defence::body_met(const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body) const {
-    return segment_distance(before, now, body.head, body.head) <= m_settings.head_radius_m ||
-           segment_distance(before, now, body.chest, body.chest) <= m_settings.chest_radius_m;
+    return body_clearance(before, now, body) <= 0.0;
 }
 
 double Defence::course_clearance(const Eigen::Vector3d& from, const Eigen::Vector3d& velocity, const DefenderBody& body) const {
     constexpr double k_course_m = 0.5; // a fist's last stretch: a course is not followed past an arm's travel
     const double speed = velocity.norm();
     if (speed <= 1e-9) return 1e9;
-    const Eigen::Vector3d to = from + velocity * (k_course_m / speed);
-    return std::min(segment_distance(from, to, body.head, body.head) - m_settings.head_radius_m,
-                    segment_distance(from, to, body.chest, body.chest) - m_settings.chest_radius_m);
+    return body_clearance(from, from + velocity * (k_course_m / speed), body);
 }
 
 void Defence::watch_blocked(double t_s, Hand& hand, const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body) {
     constexpr double k_watch_s = 0.3;
     UserStrikeEvent& event = hand.watched;
-    event.unblocked_clearance_m = std::min({event.unblocked_clearance_m, segment_distance(before, now, body.head, body.head) - m_settings.head_radius_m,
-                                           segment_distance(before, now, body.chest, body.chest) - m_settings.chest_radius_m});
+    event.unblocked_clearance_m = std::min(event.unblocked_clearance_m, body_clearance(before, now, body));
     hand.watch_receding_frames = hand.velocity.dot(body.chest - now) < 0.0 ? hand.watch_receding_frames + 1 : 0;
     if (hand.watch_receding_frames >= 3 || t_s - event.t_s >= k_watch_s) {
         event.t_s = t_s;
@@ -168,9 +169,9 @@ bool Defence::block_is_over() const {
 
 void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, double time_to_impact, const Allowed& allowed) {
     // A block handed over (block_is_over): the same arm goes on from the weight it has.
-    const bool same_arm_blocking = is_block(m_move);
-    const int blocking_arm = m_arm;
-    const double blocking_weight = m_weight;
+    const bool was_blocking = is_block(m_move);
+    const int was_arm = m_arm;
+    const double was_weight = m_weight;
     Eigen::Vector3d wrist_target;
     int arm = 0;
     m_block_before_m = m_settings.block_before_m;
@@ -203,7 +204,7 @@ void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, doubl
     }
     m_move_start_s = t_s;
     m_ramp_start_s = t_s;
-    m_ramp_from = same_arm_blocking && is_block(m_move) && blocking_arm == m_arm ? blocking_weight : 0.0;
+    m_ramp_from = was_blocking && is_block(m_move) && was_arm == m_arm ? was_weight : 0.0;
     m_hold_until_s = t_s + time_to_impact + m_settings.hold_s;
     m_move_hand = static_cast<int>(&hand - m_hands.data());
     hand.strike.move = m_move;

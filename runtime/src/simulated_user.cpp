@@ -10,6 +10,8 @@
 namespace kumite {
 namespace {
 
+constexpr double k_dodge_delay_s = 0.25; // from the order (dodge) or the strike's start (dodge-seen) to the dodge
+
 // How far into a dodge `since` seconds after it began: out over 0.15 s, held, back over 0.15 s (1.3 s in all).
 double dodge_amount(double since) {
     return since < 0.15 ? smoothstep(since / 0.15) : since < 1.15 ? 1.0 : 1.0 - smoothstep((since - 1.15) / 0.15);
@@ -35,7 +37,7 @@ SimulatedUser::SimulatedUser(SimulatedKind kind, std::uint64_t seed, double walk
 
 void SimulatedUser::on_order(double t_s) {
     if (m_kind != SimulatedKind::dodge) return;
-    m_dodge_start_s = t_s + 0.25;
+    m_dodge_start_s = t_s + k_dodge_delay_s;
     ++m_dodges;
 }
 
@@ -43,7 +45,7 @@ void SimulatedUser::set_opponent(const Eigen::Vector3d& head, const Eigen::Vecto
     m_hands.set_opponent(head, chest);
     // The fighter left its guard (a strike began) since it was last seen: a dodge 0.25 s after that.
     if (m_kind == SimulatedKind::dodge_seen && m_opponent_guarding && !guarding) {
-        m_dodge_start_s = m_seen_s + 0.25;
+        m_dodge_start_s = m_seen_s + k_dodge_delay_s;
         ++m_dodges;
     }
     m_opponent_guarding = guarding;
@@ -140,7 +142,7 @@ Result<ScriptedUser> ScriptedUser::read(const std::string& path) {
             std::string mode;
             words >> mode;
             action.dodge_mode = mode == "duck" ? 1 : mode == "side" ? 2 : mode == "off" ? 0 : -1;
-            values[0] = 0.25;
+            values[0] = k_dodge_delay_s;
             if (action.dodge_mode < 0 || !numbers(0, 1, values) || values[0] < 0.0) return fail("dodge takes duck, side or off, then an optional delay");
         } else if (verb == "punch") {
             action.kind = Action::Kind::punch;

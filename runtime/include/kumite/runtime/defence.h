@@ -184,6 +184,8 @@ private:
     };
     // The forearm (0 left, 1 right) the hand's path from `before` to `now` meets, or -1.
     int forearm_met(const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body) const;
+    // How far outside the head's or chest's hit radius (the nearer) the segment passes; <= 0: it meets one.
+    double body_clearance(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const DefenderBody& body) const;
     // Whether the path meets the head or the chest.
     bool body_met(const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body) const;
     // How far outside the head's or chest's hit radius a course from `from` along `velocity` passes (UserStrikeEvent::
