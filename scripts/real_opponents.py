@@ -20,6 +20,7 @@ import argparse
 import concurrent.futures
 import glob
 import json
+import math
 import os
 import statistics
 import subprocess
@@ -58,16 +59,40 @@ def bout(args, work, opponent, seconds, character, distance, delay):
     done = subprocess.run(command, capture_output=True, text=True)
     if done.returncode != 0:
         sys.exit(f"real_opponents: {' '.join(command)} failed: {done.stderr.strip()}")
-    # The speed at contact of every strike, by what was ordered (punch, kick, ...), pooled over the bouts.
-    contact = {}
+    # The speed at contact of every strike, by what was ordered (punch, kick, ...), pooled over the bouts; the warning
+    # each blow of the opponent that would have landed gave (it met the head or chest, or a forearm and went on to them).
+    contact, warnings, seen_at, blocked = {}, [], {}, {}
     with open(events) as f:
         for line in f:
             event = json.loads(line)
-            if event.get("type") == "strike":
+            kind = event.get("type")
+            if kind == "strike":
                 contact.setdefault(event.get("command", "?"), []).append(event.get("effector_speed_at_contact_mps", 0.0))
+            elif kind == "user_strike":
+                seen_at[event["hand"]] = event["t"]
+            elif kind == "user_strike_end":
+                seen_s = seen_at.pop(event["hand"], None)
+                warning = [event.get("approach_s", 0.0), event["t"] - seen_s if event.get("detected") and seen_s is not None else 0.0]
+                if event["outcome"] == "hit_by_user":
+                    warnings.append(warning)
+                elif event["outcome"] == "blocked":
+                    blocked[event["hand"]] = warning
+            elif kind == "user_strike_course":
+                warning = blocked.pop(event["hand"], None)
+                if warning and event.get("on_course"):
+                    warnings.append(warning)
     result = json.load(open(report))
     result["contact_speeds"] = contact
+    result["warnings"] = warnings
     return result
+
+
+def percentiles(values, points=(10, 50, 90)):
+    """Nearest-rank percentiles of `values` (None when empty)."""
+    ordered = sorted(values)
+    if not ordered:
+        return None
+    return {f"p{p}": ordered[min(len(ordered) - 1, max(0, math.ceil(p / 100.0 * len(ordered)) - 1))] for p in points}
 
 
 def wilson_95(successes, trials):
@@ -138,7 +163,7 @@ def main():
                          "by_fighter_state": user.get("by_fighter_state", {}),
                          "joint_limit_violations": report["joint_limit_violations"] + user["joint_limit_violations"],
                          "defence_foot_shift_m": user["foot_shift_m"],
-                         "contact_speeds": report["contact_speeds"],
+                         "contact_speeds": report["contact_speeds"], "warnings": report["warnings"],
                          "overshoot_max_m": report.get("overshoot_m", {}).get("max", 0.0),
                          "motion": report.get("motion", {})})
 
@@ -259,6 +284,21 @@ def main():
                                            for k, t in groups.items()), file=sys.stderr)
         return groups
 
+    # How much warning the blows that would have landed gave (blocked on course or landed; slips meet nothing): how long
+    # the hand had been closing on what it met (>= 0.5 m/s), and how long before that the defence saw it (fast and on
+    # course). A person needs about 0.2 s from a cue to a move: blows with less warning are stopped by a guard already
+    # in their way, by a reading earlier than the hand's own approach, or not at all.
+    warnings = [w for row in rows for w in row.pop("warnings")]
+    approach = [w[0] for w in warnings]
+    overall["warning_of_blows_that_would_land"] = {
+        "count": len(warnings), "approach_s": percentiles(approach), "seen_before_s": percentiles([w[1] for w in warnings]),
+        "share_approach_at_least_0_2_s": rate(sum(a >= 0.2 for a in approach), len(approach))}
+    if warnings:
+        w = overall["warning_of_blows_that_would_land"]
+        print(f"warning of the {len(warnings)} blows that would land (p10/p50/p90): approach "
+              f"{w['approach_s']['p10']:.2f}/{w['approach_s']['p50']:.2f}/{w['approach_s']['p90']:.2f} s "
+              f"({100 * w['share_approach_at_least_0_2_s']:.0f}% at least 0.2 s), seen "
+              f"{w['seen_before_s']['p10']:.2f}/{w['seen_before_s']['p50']:.2f}/{w['seen_before_s']['p90']:.2f} s before", file=sys.stderr)
     overall["by_distance"] = pooled_by("distance_m", "distance (m)")
     overall["by_order_delay"] = pooled_by("order_delay_s", "order delay (s)")
     print(json.dumps({"aim": args.aim, "distance_m": args.distances[0] if len(args.distances) == 1 else args.distances,

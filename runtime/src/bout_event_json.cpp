@@ -92,6 +92,8 @@ nlohmann::json event_object(const Bout& bout, const BoutEvent& bout_event) {
         if (event.user_strike.outcome == UserStrikeOutcome::slipped && event.user_strike.unslipped_clearance_m < 1e8)
             line["unslipped_clearance_m"] = event.user_strike.unslipped_clearance_m;
         line["detected"] = event.user_strike.detected;
+        line["peak_speed_mps"] = event.user_strike.peak_speed_mps;
+        if (event.user_strike.approach_s >= 0.0) line["approach_s"] = event.user_strike.approach_s;
         if (event.user_strike.blocking_arm >= 0) line["blocking_arm"] = event.user_strike.blocking_arm == 0 ? "left" : "right";
         if (event.user_strike.block_clip >= 0) line["block_clip"] = bout.database().string(bout.database().clips[event.user_strike.block_clip].name);
         if (event.user_strike.arm_speed_mps >= 0.0) line["arm_speed_mps"] = event.user_strike.arm_speed_mps;

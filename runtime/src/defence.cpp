@@ -90,6 +90,10 @@ double Defence::body_clearance(const Eigen::Vector3d& a, const Eigen::Vector3d& 
                     segment_distance(a, b, body.chest, body.chest) - m_settings.chest_radius_m);
 }
 
+int Defence::met_part(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const DefenderBody& body) const {
+    return segment_distance(a, b, body.head, body.head) - m_settings.head_radius_m <= segment_distance(a, b, body.chest, body.chest) - m_settings.chest_radius_m ? 0 : 1;
+}
+
 bool Defence::body_met(const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body) const {
     return body_clearance(before, now, body) <= 0.0;
 }
@@ -119,12 +123,28 @@ void Defence::end_watch(Hand& hand) {
     push(hand.watched);
 }
 
+void Defence::follow_closing(Hand& hand, double before_s, const Eigen::Vector3d& before, const Eigen::Vector3d& now, double dt_s, const DefenderBody& body) {
+    constexpr double k_closing_mps = 0.5; // slower is a hand held or drifting, not yet a blow's approach
+    for (int part = 0; part < 2; ++part) {
+        const Eigen::Vector3d& centre = part == 0 ? body.head : body.chest;
+        const double closing_mps = ((centre - before).norm() - (centre - now).norm()) / dt_s;
+        double& since = hand.closing_since_s[part];
+        since = closing_mps >= k_closing_mps ? (since < 0.0 ? before_s : since) : -1.0;
+    }
+}
+
+double Defence::approach_time(const Hand& hand, double t_s, int part) {
+    const double since = hand.closing_since_s[part];
+    return since >= 0.0 ? t_s - since : -1.0;
+}
+
 void Defence::end_strike(double t_s, Hand& hand, UserStrikeOutcome outcome) {
     UserStrikeEvent event = hand.strike;
     event.ended = true;
     event.t_s = t_s;
     event.outcome = outcome;
     event.hand_velocity = hand.velocity;
+    event.peak_speed_mps = hand.peak_speed_mps;
     event.forearm_to_path_m = is_block(event.move) ? hand.closest_forearm_m : -1.0;
     push(event);
     if (hand.watching) end_watch(hand); // an earlier block's, still followed
@@ -304,8 +324,10 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
         hand.position = now;
         hand.last_s = t_s;
         if (hand.watching) watch_blocked(t_s, hand, before, now, body);
+        follow_closing(hand, t_s - dt, before, now, dt, body);
 
         if (hand.striking) {
+            hand.peak_speed_mps = std::max(hand.peak_speed_mps, hand.velocity.norm());
             // Its path this frame against the blocking forearm, the head and the chest.
             const bool blocking = is_block(m_move) && m_move_hand == side;
             if (blocking && hand.velocity.norm() >= m_settings.min_speed_mps) {
@@ -349,10 +371,12 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
             if (const int arm = forearm_met(before, now, body); arm >= 0) {
                 hand.strike.blocking_arm = arm;
                 hand.strike.unblocked_clearance_m = course_clearance(before, hand.velocity, body);
+                hand.strike.approach_s = approach_time(hand, t_s, hand.strike.at_head ? 0 : 1);
                 end_strike(t_s, hand, UserStrikeOutcome::blocked);
                 continue;
             }
             if (body_met(before, now, body)) {
+                hand.strike.approach_s = approach_time(hand, t_s, met_part(before, now, body));
                 end_strike(t_s, hand, UserStrikeOutcome::hit_by_user);
                 continue;
             }
@@ -382,6 +406,8 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
             hand.strike.hand_speed_mps = speed;
             hand.strike.detected = false;
             hand.strike.blocking_arm = forearm;
+            hand.strike.approach_s = approach_time(hand, t_s, forearm >= 0 ? (hand.strike.at_head ? 0 : 1) : met_part(before, now, body));
+            hand.peak_speed_mps = speed;
             if (forearm >= 0) hand.strike.unblocked_clearance_m = course_clearance(before, hand.velocity, body);
             push(hand.strike);
             end_strike(t_s, hand, forearm >= 0 ? UserStrikeOutcome::blocked : UserStrikeOutcome::hit_by_user);
@@ -422,6 +448,7 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
         hand.strike.at_head = aimed == 0;
         hand.strike.time_to_impact_s = best_time;
         hand.strike.hand_speed_mps = speed;
+        hand.peak_speed_mps = speed;
         if (m_settings.enabled && allowed.any() && free_to_move) start_move(t_s, hand, body, best_time, allowed);
         push(hand.strike);
     }

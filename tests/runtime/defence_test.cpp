@@ -405,3 +405,38 @@ TEST_CASE("defence: a double jab's second blow gets a block too, handed over fro
     CHECK(handed[1].move == DefenceMove::synthesized);
     CHECK(held[1].move == DefenceMove::none); // one move at a time: the first block is still held and released
 }
+
+TEST_CASE("defence: a blow's end tells how long the hand had been closing on what it met, and its fastest speed", "[runtime]") {
+    // The thrust starts at 0.2 s: from then on the hand closes on the head, at 3 m/s, or at 6 m/s into a block.
+    const Eigen::Vector3d from(-0.15, 1.45, 0.8), to(0.0, 1.6, 0.0);
+    Defence off(DefenceSettings{.enabled = false});
+    const std::vector<UserStrikeEvent> landed = thrust(off, 0, from, to, 3.0, true);
+    REQUIRE(landed.size() == 2);
+    REQUIRE(landed[1].outcome == UserStrikeOutcome::hit_by_user);
+    CHECK(landed[1].approach_s == Approx(landed[1].t_s - 0.2).margin(1e-9));
+    CHECK(landed[1].approach_s > 0.15); // 0.8 m less the head's radius at 3 m/s
+    CHECK(landed[1].peak_speed_mps == Approx(3.0).margin(0.05));
+    CHECK(landed[1].peak_speed_mps >= landed[0].hand_speed_mps);
+
+    Defence defence;
+    const std::vector<UserStrikeEvent> blocked = thrust(defence, 0, from, to, 6.0, true);
+    REQUIRE(blocked.size() == 3);
+    REQUIRE(blocked[1].outcome == UserStrikeOutcome::blocked);
+    CHECK(blocked[1].approach_s == Approx(blocked[1].t_s - 0.2).margin(1e-9));
+    CHECK(blocked[1].peak_speed_mps == Approx(6.0).margin(0.1));
+
+    // A hand that comes halfway, waits, then goes on: its approach is the last one, from where it waited.
+    const Eigen::Vector3d halfway = 0.5 * (from + to);
+    const double half_s = (halfway - from).norm() / 3.0, resume_s = 0.2 + half_s + 0.15;
+    const auto feint = [&](double t) -> Eigen::Vector3d {
+        if (t <= 0.2) return from;
+        if (t <= 0.2 + half_s) return from + (halfway - from) * ((t - 0.2) / half_s);
+        if (t <= resume_s) return halfway;
+        return halfway + (to - halfway) * std::min(1.0, (t - resume_s) / half_s);
+    };
+    Defence after_feint(DefenceSettings{.enabled = false});
+    std::vector<UserStrikeEvent> feinted = run_hand(after_feint, 0, feint, true, [](double) {});
+    REQUIRE_FALSE(feinted.empty());
+    REQUIRE(feinted.back().outcome == UserStrikeOutcome::hit_by_user);
+    CHECK(feinted.back().approach_s == Approx(feinted.back().t_s - resume_s).margin(1.0 / 60.0 + 1e-9));
+}

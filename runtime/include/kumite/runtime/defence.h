@@ -111,6 +111,12 @@ struct UserStrikeEvent {
     // the path has been followed (`course_followed`: not `ended`, the outcome `blocked`, the time then).
     double unblocked_clearance_m = 1e9;
     bool course_followed = false;
+    // Ended: the fastest the hand moved from being seen to its end (unseen: at its arrival), m/s.
+    double peak_speed_mps = 0.0;
+    // Ended, blocked or hit_by_user: how long the hand had been closing on what it met (the head or the chest, at
+    // >= 0.5 m/s) before it met it: the warning its motion gave (a person needs about 0.2 s from there to
+    // begin a move). The strike was seen `time_to_impact`-ish later: when it was fast and on course.
+    double approach_s = -1.0;
 };
 
 // The distance between segments [a0, a1] and [b0, b1].
@@ -177,6 +183,9 @@ private:
         double closest_forearm_m = 1e9;
         int receding_frames = 0;
         bool touching = false;       // met the fighter unseen, and has not left it since
+        // Since when the hand has been closing on the head [0] and the chest [1] (UserStrikeEvent::approach_s); < 0: not.
+        std::array<double, 2> closing_since_s{-1.0, -1.0};
+        double peak_speed_mps = 0.0; // of the strike under way
         // A blocked strike whose path is followed on (unblocked_clearance_m) before its end is told.
         bool watching = false;
         UserStrikeEvent watched;
@@ -186,6 +195,8 @@ private:
     int forearm_met(const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body) const;
     // How far outside the head's or chest's hit radius (the nearer) the segment passes; <= 0: it meets one.
     double body_clearance(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const DefenderBody& body) const;
+    // Which the segment passes nearer, outside its hit radius: the head (0) or the chest (1).
+    int met_part(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const DefenderBody& body) const;
     // Whether the path meets the head or the chest.
     bool body_met(const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body) const;
     // How far outside the head's or chest's hit radius a course from `from` along `velocity` passes (UserStrikeEvent::
@@ -205,6 +216,10 @@ private:
     bool block_plan(const Hand& hand, const DefenderBody& body, double time_to_impact, const std::array<bool, 2>& arms,
                     Eigen::Vector3d& wrist_target, int& arm, double& meeting_s, bool nearer = true) const;
     void end_strike(double t_s, Hand& hand, UserStrikeOutcome outcome);
+    // The hand's closing on the head and the chest over its path this frame (Hand::closing_since_s).
+    static void follow_closing(Hand& hand, double before_s, const Eigen::Vector3d& before, const Eigen::Vector3d& now, double dt_s, const DefenderBody& body);
+    // How long the hand had been closing on the head (`part` 0) or the chest (1) at t_s (-1: it was not).
+    static double approach_time(const Hand& hand, double t_s, int part);
     double ramp_weight(double t_s) const; // the move's weight at t_s while it ramps in
     double shortest_ramp_s(double travel_m) const; // a ramp over `travel_m` at max_block_wrist_mps at its fastest
 
