@@ -330,7 +330,7 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
             hand.peak_speed_mps = std::max(hand.peak_speed_mps, hand.velocity.norm());
             // Its path this frame against the blocking forearm, the head and the chest.
             const bool blocking = is_block(m_move) && m_move_hand == side;
-            if (blocking && hand.velocity.norm() >= m_settings.min_speed_mps) {
+            if (blocking && hand.velocity.norm() >= m_settings.reaim_min_speed_mps) {
                 // The course is known better each frame (the first estimate mixes in the draw back): re-aim.
                 const Eigen::Vector3d target = hand.strike.at_head ? body.head : body.chest;
                 const double speed = hand.velocity.norm();

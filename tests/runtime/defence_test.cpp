@@ -440,3 +440,31 @@ TEST_CASE("defence: a blow's end tells how long the hand had been closing on wha
     REQUIRE(feinted.back().outcome == UserStrikeOutcome::hit_by_user);
     CHECK(feinted.back().approach_s == Approx(feinted.back().t_s - resume_s).margin(1.0 / 60.0 + 1e-9));
 }
+
+TEST_CASE("defence: a block follows a fist that turns onto the head as it slows, while it still travels", "[runtime]") {
+    // Kata-like: from 0.8 m the fist heads for a point 0.25 m beside the head at 3 m/s (a threat: within 0.3 m),
+    // then, 0.45 m out, turns onto the head and slows to 1.8 m/s, under the 2.5 m/s that makes a strike.
+    const Eigen::Vector3d from(-0.15, 1.45, 0.8), beside(-0.25, 1.6, 0.0), head(0.0, 1.6, 0.0);
+    const Eigen::Vector3d turn = from + (beside - from).normalized() * ((from - head).norm() - 0.45);
+    const double first_s = (turn - from).norm() / 3.0, second_s = (head - turn).norm() / 1.8;
+    const auto path = [&](double t) -> Eigen::Vector3d {
+        const double moving = t - 0.2;
+        if (moving <= 0.0) return from;
+        if (moving <= first_s) return from + (turn - from) * (moving / first_s);
+        return turn + (head - turn) * std::min(1.0, (moving - first_s) / second_s);
+    };
+    const auto outcome = [&](double reaim_mps) {
+        DefenceSettings settings;
+        settings.reaim_min_speed_mps = reaim_mps;
+        Defence defence(settings);
+        const std::vector<UserStrikeEvent> events = run_hand(defence, 0, path, true, [](double) {});
+        REQUIRE(events.size() >= 2);
+        CHECK(events[0].move == DefenceMove::synthesized);
+        for (const UserStrikeEvent& event : events) {
+            if (event.ended) return event.outcome;
+        }
+        return UserStrikeOutcome::missed;
+    };
+    CHECK(outcome(DefenceSettings{}.reaim_min_speed_mps) == UserStrikeOutcome::blocked);
+    CHECK(outcome(2.5) == UserStrikeOutcome::hit_by_user); // followed only while over 2.5 m/s: the forearm stays beside
+}

@@ -56,6 +56,10 @@ struct DefenceSettings {
     // next (issue 44: 21 of 45 blows that landed at 1.2 m against the recorded opponents came unanswered while a
     // move for an earlier one was still on). A slip is not handed over: the trunk would snap back.
     bool hand_over_blocks = true;
+    // A block's meeting point follows the fist's course, known better each frame, while the fist still travels at
+    // least this fast (a kata's punch closes at 2.5-3 m/s and slows before it arrives: followed only while over the
+    // 2.5 m/s that makes it a strike, the forearm stayed where its first course pointed).
+    double reaim_min_speed_mps = 1.0;
     // Blocks from the database's block clips when one fits (else all synthesized). Off by default: blended in over
     // the little time a fist leaves, the arm moves about twice as fast as in the captured clip (README, captured blocks).
     bool captured_blocks = false;
