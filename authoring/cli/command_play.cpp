@@ -40,7 +40,7 @@ const CommandSpec& play_spec() {
         "play",
         "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:HEAD[,LEFT,RIGHT]] | replay:FILE | simulate:KIND|FILE] "
         "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] "
-        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--max-speedup RATIO] [--human-speed] [--superhuman-strikes] [--superhuman-moves] [--superhuman-blocks] [--superhuman-extremities] [--drop-guard] [--no-hit-reactions] [--no-block-handover] [--rest-in-reach] [--stay-after-strikes] [--play-out-strikes] [--stand-ground] [--no-lead-steps] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
+        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--max-speedup RATIO] [--human-speed] [--superhuman-strikes] [--superhuman-moves] [--superhuman-blocks] [--superhuman-extremities] [--drop-guard] [--no-hit-reactions] [--no-block-handover] [--no-slip-in-reaction] [--rest-in-reach] [--stay-after-strikes] [--play-out-strikes] [--stand-ground] [--no-lead-steps] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
         "Runs the fighter at 60 Hz against the user's head and hands (a DTrack system, a replayed CSV, or a\n"
         "simulated user) and the supervisor's commands, one per line: punch [left|right] [straight|hook|uppercut]\n"
         "[low|middle|high], kick [left|right] [front|roundhouse|side] [low|middle|high], slash [left|right] [low|middle|high],\n"
@@ -107,6 +107,8 @@ const CommandSpec& play_spec() {
          {"no-defence", "", "the fighter does not block or slip the user's strikes (also the command 'defence on|off', the viewer's D key)"},
          {"no-block-handover", "", "one defence move at a time, held and released before the next (default: a block whose blow is over\n"
                                    "gives way to the next blow of a combination)"},
+         {"no-slip-in-reaction", "", "while rocked by a blow (a hit reaction) the fighter only covers with its arms (default: it may also slip\n"
+                                     "the next blow, leaning on top of the reaction, never past the trunk's limit)"},
          {"captured-blocks", "", "block punches with the database's captured blocks when one fits: rising at the head, rising or downward at\n"
                                  "the chest (events: move block_clip); else the block is synthesized from the guard"},
          {"block-speed-limit", "RATIO", "captured blocks move the arm at most RATIO times as fast as their clip (1: no faster than captured, no pop);\n"
@@ -256,6 +258,7 @@ int run_play(int argc, char** argv) {
     if (arguments.has("play-out-strikes")) options.fighter.strike_follow_s = 0.0;
     options.fighter.defence.captured_blocks = arguments.has("captured-blocks");
     options.fighter.defence.hand_over_blocks = !arguments.has("no-block-handover");
+    options.fighter.defence.slip_in_hit_reaction = !arguments.has("no-slip-in-reaction");
     options.fighter.defence.block_clip_max_speed_ratio = *block_speed_limit;
     options.fighter.variety_recent = static_cast<int>(*variety);
     options.record = arguments.value("record").has_value();

@@ -1,16 +1,19 @@
 // Hit reactions (issue 44): the captured reactions' courses, the choice for a blow, and a fighter that answers every
-// landed strike with one, its head going the way the blow pushed.
+// landed strike with one, its head going the way the blow pushed; rocked by a blow, it may still slip the next.
 
 #include "fighter_bout.h"
 #include "support/reference_database.h"
+#include "support/test_paths.h"
 
 #include "fighter/hit_reactions.h"
 
 #include "kumite/core/hit_trajectory.h"
+#include "kumite/runtime/capture_user.h"
 #include "kumite/runtime/simulated_user.h"
 
 #include <catch2/catch.hpp>
 
+#include <filesystem>
 #include <map>
 #include <string>
 
@@ -127,4 +130,40 @@ TEST_CASE("fighter: every user strike that lands is answered by a captured hit r
     CHECK(along >= 0.7 * reactions.size());
     CHECK(rocked > 0);
     CHECK(back_to_guard >= rocked - 1); // each reaction (or a blow's that came during it) ends back in the guard
+}
+
+TEST_CASE("fighter: rocked by a blow, it may still slip the next one, the trunk within its limit", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = reference_database();
+    const std::filesystem::path boxing = kumite::test::mocap_root() / "cmu14-boxing";
+    if (!content || !std::filesystem::exists(boxing / "box-1.bvh")) return;
+    // Recorded combinations land blows close together: some next blow comes while the fighter reels from the last.
+    const auto count = [&](bool slip_in_hit_reaction, int& violations) {
+        int slips_in_reaction = 0;
+        for (const std::string bout : {"box-1.bvh brawler", "box-1.bvh scout", "box-2.bvh brawler", "box-2.bvh scout"}) {
+            const std::string file = bout.substr(0, bout.find(' ')), character = bout.substr(bout.find(' ') + 1);
+            Result<CaptureUser> user = CaptureUser::open((boxing / file).string());
+            REQUIRE(user);
+            FighterSettings settings;
+            settings.defence.slip_in_hit_reaction = slip_in_hit_reaction;
+            kumite::test::Bout b(content->view(), character, settings);
+            FighterState state = FighterState::rest;
+            for (int frame = 0; frame < int(std::min(40.0, user->duration_s()) * 60.0); ++frame) {
+                b.step_against_capture(*user, frame);
+                for (const FighterEvent& e : b.fighter->events()) {
+                    if (e.type == FighterEvent::Type::state) state = e.state;
+                    if (e.type == FighterEvent::Type::user_strike) slips_in_reaction += state == FighterState::hit_reaction && e.user_strike.move == DefenceMove::slip;
+                    if (e.type == FighterEvent::Type::user_strike_end) violations += e.joint_limit_violations;
+                }
+                b.fighter->clear_events();
+            }
+        }
+        return slips_in_reaction;
+    };
+    int violations = 0, violations_without = 0;
+    const int slips = count(true, violations), slips_without = count(false, violations_without);
+    INFO(slips << " slips started in hit reactions (" << slips_without << " with the option off)");
+    CHECK(slips >= 1);
+    CHECK(slips_without == 0);
+    CHECK(violations == 0); // the lean on top of a reaction's never turns the trunk past its limit
+    CHECK(violations_without == 0);
 }

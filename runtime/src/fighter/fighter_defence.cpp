@@ -50,8 +50,8 @@ void FighterDefence::defend(double t_s, double shown_s, const UserHands& hands, 
         const int striking_limb = limb_of_segment(static_cast<BodyPart>(std::max(0, striking_segment)));
         if (striking_limb == int(Limb::arm_l)) allowed.block_arms[0] = false;
         if (striking_limb == int(Limb::arm_r)) allowed.block_arms[1] = false;
-    } else if (state == FighterState::hit_reaction) { // rocked by a blow: the arms may still cover, the trunk is the reaction's
-        allowed.slip = false;
+    } else if (state == FighterState::hit_reaction) { // rocked by a blow: the arms may still cover, the head lean on top
+        allowed.slip = m_defence.settings().slip_in_hit_reaction;
     } else if (state == FighterState::hold) {
         allowed = Defence::Allowed{{false, false}, false};
     }
@@ -138,8 +138,10 @@ void FighterDefence::apply(double now_s, int striking_segment, const LimbPins& p
         const Eigen::Vector3d offset = m_defence.slip_offset();
         const Eigen::Vector3d axis = Eigen::Vector3d::UnitY().cross(offset).normalized();
         // At most 30 degrees: a short trunk leans that far and no further (the trunk's joint limit, with the guard's
-        // own twist, is 75 degrees).
-        const double angle = slip * std::min(0.5236, std::asin(std::min(1.0, offset.norm() / height)));
+        // own twist, is 75 degrees); and no further than the trunk may still turn from where the pose has it (a hit
+        // reaction's fold): two turns together turn at most by the sum of their angles.
+        const double room = std::max(0.0, JointLimits{}.trunk_turn_rad - trunk_before - 1e-6);
+        const double angle = std::min(room, slip * std::min(0.5236, std::asin(std::min(1.0, offset.norm() / height))));
         mir_frame_turn(m_defended_frame, TrunkPivot::spine_base, Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis)), before[base],
                        anatomy.leg_length, anatomy.ankle_height);
     }

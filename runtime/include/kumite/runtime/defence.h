@@ -56,6 +56,10 @@ struct DefenceSettings {
     // next (issue 44: 21 of 45 blows that landed at 1.2 m against the recorded opponents came unanswered while a
     // move for an earlier one was still on). A slip is not handed over: the trunk would snap back.
     bool hand_over_blocks = true;
+    // Rocked by a blow, the fighter may still slip the next one: the lean goes on top of the hit reaction's (never
+    // past the trunk's limit: a slip leans no further than the trunk may still turn). Off: in a hit reaction only the
+    // arms may cover (issue 44: 37 of 94 blows that would land during reactions landed against the recorded opponents).
+    bool slip_in_hit_reaction = true;
     // A block's meeting point follows the fist's course, known better each frame, while the fist still travels at
     // least this fast (a kata's punch closes at 2.5-3 m/s and slows before it arrives: followed only while over the
     // 2.5 m/s that makes it a strike, the forearm stayed where its first course pointed).
