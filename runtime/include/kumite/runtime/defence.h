@@ -123,7 +123,7 @@ struct UserStrikeEvent {
     double peak_speed_mps = 0.0;
     // Ended, blocked or hit_by_user: how long the hand had been closing on what it met (the head or the chest, at
     // >= 0.5 m/s) before it met it: the warning its motion gave (a person needs about 0.2 s from there to
-    // begin a move). The strike was seen `time_to_impact`-ish later: when it was fast and on course.
+    // begin a move). The defence sees it later, once it is fast and on course (`user_strike`'s time).
     double approach_s = -1.0;
 };
 
