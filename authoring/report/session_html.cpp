@@ -69,12 +69,15 @@ std::optional<double> json_number(const nlohmann::json* object, std::initializer
     return std::isfinite(value) ? std::optional<double>(value) : std::nullopt;
 }
 
+constexpr double k_warning_s = 0.2; // from a cue to a move, a person's
+
 struct FighterCounts {
     long long orders = 0, queued = 0, performed = 0, refused = 0, expired = 0;
     long long strikes = 0, hits = 0;
     long long user_strikes = 0, blocked = 0, slipped = 0, landed = 0, missed = 0, unfinished = 0, unseen = 0, blocks = 0, slips = 0,
               block_clips = 0;
     long long kept_off = 0; // blocked or slipped where the hand would have landed (on course)
+    long long warned = 0;   // of those and the ones that landed: the hand's approach lasted a person's 0.2 s or more
     long long hit_reactions = 0, captured_hit_reactions = 0, hit_reaction_blows = 0;
     long long losses = 0;
     double lost_s = 0.0;
@@ -101,6 +104,7 @@ FighterCounts count(const FighterLog& fighter, double duration_s) {
         c.blocks += strike.move == "block" || strike.move == "block_clip" || strike.move == "synthesized";
         c.block_clips += strike.move == "block_clip";
         c.kept_off += strike.kept_off;
+        c.warned += (strike.kept_off || strike.outcome == "hit_by_user") && strike.approach_s >= k_warning_s;
     }
     c.hit_reactions = fighter.hit_reactions;
     c.captured_hit_reactions = fighter.captured_hit_reactions;
@@ -146,6 +150,8 @@ std::string user_table(const FighterCounts& c) {
            (c.unfinished ? count_row("not ended when the events did", c.unfinished, "n-unfinished") : std::string()) +
            count_row("defended of those that would land", defended, "n-defended", defended + c.landed) +
            count_row("... counting only blocks and slips of blows on course", c.kept_off, "n-kept-off", c.kept_off + c.landed) +
+           count_row("of those blows, ones whose hand came on for 0.2 s or more (the time a person needs to move)", c.warned, "n-warned",
+                     c.kept_off + c.landed) +
            count_row("not seen coming", c.unseen, "n-unseen") + count_row("defences: blocks", c.blocks, "n-blocks") +
            count_row("of those, captured blocks", c.block_clips, "n-block-clips", c.blocks) +
            count_row("defences: slips", c.slips, "n-slips") +

@@ -168,6 +168,7 @@ bool SessionLog::add(const nlohmann::json& line) {
         strike->detected = flag(line, "detected", strike->detected);
         if (strike->outcome.empty()) strike->outcome = "unknown";
         strike->kept_off = strike->outcome == "slipped" && number_or(line, "unslipped_clearance_m", 1.0) <= 0.0;
+        strike->approach_s = number_or(line, "approach_s", -1.0);
         m_last_ended[index][hand == "left" ? 0 : 1] = static_cast<std::size_t>(strike - log.user_strikes.data()) + 1;
         log.joint_limit_violations += static_cast<long long>(std::max(0.0, number_or(line, "joint_limit_violations", 0.0)));
     } else if (type == "user_strike_course") {

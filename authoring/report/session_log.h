@@ -54,6 +54,8 @@ struct UserStrikeRecord {
     bool detected = true;
     // Blocked or slipped, and the hand would have landed without it (its course event, its unslipped clearance).
     bool kept_off = false;
+    // How long the hand had been closing on what it met before it met it (user_strike_end's approach_s); -1: not told.
+    double approach_s = -1.0;
 };
 
 struct TrackerLoss {

@@ -46,6 +46,7 @@ std::vector<nlohmann::json> bout_lines(int strikes) {
         nlohmann::json end = {{"t", t + 0.9}, {"type", "user_strike_end"}, {"fighter", 0}, {"hand", "left"}, {"outcome", outcomes[i % 4]}};
         // Every other slip and block was of a blow that would have landed (on course), the rest of ones passing wide.
         if (i % 4 == 1) end["unslipped_clearance_m"] = i % 8 == 1 ? -0.02 : 0.05;
+        end["approach_s"] = i % 3 == 0 ? 0.25 : 0.1;
         lines.push_back(end);
         if (i % 4 == 0) lines.push_back({{"t", t + 1.1}, {"type", "user_strike_course"}, {"fighter", 0}, {"hand", "left"}, {"on_course", i % 8 == 0}});
     }
@@ -93,6 +94,7 @@ TEST_CASE("report: the summary's counts are the events', one mark per strike in 
     CHECK(summary_count(html, "n-blocked") == strikes / 4);
     CHECK(summary_count(html, "n-landed") == strikes / 4);
     CHECK(summary_count(html, "n-kept-off") == 4); // blocks at 0 and 8, slips at 1 and 9 of blows on course
+    CHECK(summary_count(html, "n-warned") == 3);   // of those and the landed 2, 6 and 10: 0, 6 and 9 came on for 0.25 s
     CHECK(summary_count(html, "n-losses") == 1);
     CHECK(occurrences(html, "class=\"tl-strike hit\"") == strikes / 2);
     CHECK(occurrences(html, "class=\"tl-strike miss\"") == strikes / 2);
