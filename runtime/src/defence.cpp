@@ -85,13 +85,18 @@ int Defence::forearm_met(const Eigen::Vector3d& before, const Eigen::Vector3d& n
     return -1;
 }
 
+std::array<double, 2> Defence::part_clearances(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const DefenderBody& body) const {
+    return {segment_distance(a, b, body.head, body.head) - m_settings.head_radius_m, segment_distance(a, b, body.chest, body.chest) - m_settings.chest_radius_m};
+}
+
 double Defence::body_clearance(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const DefenderBody& body) const {
-    return std::min(segment_distance(a, b, body.head, body.head) - m_settings.head_radius_m,
-                    segment_distance(a, b, body.chest, body.chest) - m_settings.chest_radius_m);
+    const std::array<double, 2> clearance = part_clearances(a, b, body);
+    return std::min(clearance[0], clearance[1]);
 }
 
 int Defence::met_part(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const DefenderBody& body) const {
-    return segment_distance(a, b, body.head, body.head) - m_settings.head_radius_m <= segment_distance(a, b, body.chest, body.chest) - m_settings.chest_radius_m ? 0 : 1;
+    const std::array<double, 2> clearance = part_clearances(a, b, body);
+    return clearance[0] <= clearance[1] ? 0 : 1;
 }
 
 bool Defence::body_met(const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body) const {

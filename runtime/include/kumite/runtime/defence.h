@@ -201,6 +201,8 @@ private:
     };
     // The forearm (0 left, 1 right) the hand's path from `before` to `now` meets, or -1.
     int forearm_met(const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body) const;
+    // How far outside the head's [0] and the chest's [1] hit radius the segment passes; <= 0: it meets that part.
+    std::array<double, 2> part_clearances(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const DefenderBody& body) const;
     // How far outside the head's or chest's hit radius (the nearer) the segment passes; <= 0: it meets one.
     double body_clearance(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const DefenderBody& body) const;
     // Which the segment passes nearer, outside its hit radius: the head (0) or the chest (1).
