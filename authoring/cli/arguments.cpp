@@ -11,13 +11,18 @@
 namespace kumite::cli {
 
 bool Arguments::has(const std::string& flag) const {
-    return values.count(flag) > 0 || std::find(switches.begin(), switches.end(), flag) != switches.end();
+    return values.count(flag) > 0 || lists.count(flag) > 0 || std::find(switches.begin(), switches.end(), flag) != switches.end();
 }
 
 std::optional<std::string> Arguments::value(const std::string& flag) const {
     const auto found = values.find(flag);
     if (found == values.end()) return std::nullopt;
     return found->second;
+}
+
+std::vector<std::string> Arguments::all(const std::string& flag) const {
+    const auto found = lists.find(flag);
+    return found == lists.end() ? std::vector<std::string>{} : found->second;
 }
 
 Result<long long> Arguments::integer(const std::string& flag, long long min, long long max, long long fallback) const {
@@ -84,6 +89,10 @@ Result<ParseOutcome> parse_arguments(const CommandSpec& spec, int argc, char** a
             if (i + 1 >= argc) return make_error(ErrorCode::invalid, "flag --" + name + " needs a value (" + spec_flag->value_name + ")");
             inline_value = argv[++i];
         }
+        if (spec_flag->repeatable) {
+            arguments.lists[name].push_back(*inline_value);
+            continue;
+        }
         if (arguments.values.count(name)) return make_error(ErrorCode::invalid, "flag --" + name + " given twice");
         arguments.values[name] = *inline_value;
     }
@@ -99,7 +108,9 @@ std::string usage_text(const CommandSpec& spec) {
         std::string left = "  --" + flag.name + (flag.value_name.empty() ? "" : " " + flag.value_name);
         if (left.size() < 30) left.resize(30, ' ');
         else left += "\n" + std::string(30, ' ');
-        text += left + flag.help + "\n";
+        std::string help = flag.help; // continuation lines under the first
+        for (std::size_t at = help.find('\n'); at != std::string::npos; at = help.find('\n', at + 31)) help.insert(at + 1, 30, ' ');
+        text += left + help + "\n";
     }
     text += "  --help                      this text\n";
     return text;

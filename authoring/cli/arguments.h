@@ -19,6 +19,7 @@ struct FlagSpec {
     std::string name;       // without dashes: "unit"
     std::string value_name; // empty for a switch: "auto|m|cm|mm|in|cmu"
     std::string help;
+    bool repeatable = false; // a flag with a value that may be given several times (Arguments::all)
 };
 
 struct CommandSpec {
@@ -34,9 +35,12 @@ struct Arguments {
     std::vector<std::string> positionals;
     std::map<std::string, std::string> values; // flags with values
     std::vector<std::string> switches;         // flags without values
+    std::map<std::string, std::vector<std::string>> lists; // repeatable flags' values, in the order given
 
     bool has(const std::string& flag) const;
     std::optional<std::string> value(const std::string& flag) const;
+    // Every value of a repeatable flag, in the order given (empty when absent).
+    std::vector<std::string> all(const std::string& flag) const;
     // The flag as a whole number in [min, max], `fallback` when absent; an error says which flag and why.
     Result<long long> integer(const std::string& flag, long long min, long long max, long long fallback) const;
     // The flag as a finite number in [min, max] (`unit` names it in the error: "seconds"), `fallback` when absent.
