@@ -53,20 +53,21 @@ def bouts(work):
         "dodge_dense": ["--tracker", "simulate:dodge", "--commands", f"script:{dense}", "--duration", "30", "--seed", "2",
                         "--character", "giant"],
         "punch_synthesized": ["--tracker", "simulate:punch", "--commands", f"script:{every2}", "--duration", "30", "--character", "kid"],
-        "punch_captured": ["--tracker", "simulate:punch", "--commands", f"script:{every2}", "--duration", "30", "--captured-blocks"],
-        "punch_captured_limited": ["--tracker", "simulate:punch", "--duration", "30", "--captured-blocks", "--block-speed-limit", "1",
+        "punch_captured": ["--tracker", "simulate:punch", "--commands", f"script:{every2}", "--duration", "30", "--set", "defence.captured_blocks=true"],
+        "punch_captured_limited": ["--tracker", "simulate:punch", "--duration", "30", "--set", "defence.captured_blocks=true",
+                                   "--set", "defence.block_clip_max_speed_ratio=1",
                                    "--character", "scout"],
         "counter_no_defence": ["--tracker", "simulate:counter", "--commands", f"script:{dense}", "--duration", "30", "--no-defence",
-                               "--variety", "0", "--character", "runner"],
+                               "--set", "variety_recent=0", "--character", "runner"],
         "boxer_predicted": ["--tracker", f"capture:{boxer}:1.2", "--aim", "predicted", "--commands", f"script:{every2}",
-                            "--duration", "30", "--captured-blocks"],
+                            "--duration", "30", "--set", "defence.captured_blocks=true"],
         "boxer_close_latched": ["--tracker", f"capture:{boxer}:1.0", "--commands", f"script:{dense}", "--duration", "30",
                                 "--character", "brawler"],
         "fighters_200": ["--tracker", "simulate:wander", "--fighters", "200", "--commands", f"script:{every2}", "--duration", "8"],
     }
     if first_kata:
         table["kata_captured"] = ["--tracker", f"capture:{os.path.join(kata, first_kata)}:1.3", "--commands", f"script:{every2}",
-                                  "--duration", "30", "--captured-blocks", "--aim", "predicted"]
+                                  "--duration", "30", "--set", "defence.captured_blocks=true", "--aim", "predicted"]
     return table
 
 
@@ -137,7 +138,8 @@ def main():
             if "boxer_close_latched" in results:
                 replay = with_gap(os.path.join(out_dir, "boxer_close_latched.csv"), os.path.join(work, "replay.csv"), 12.0, 13.5)
                 name, digest = run(args.kumite, db, "replay_boxer", ["--tracker", f"replay:{replay}", "--commands",
-                                   f"script:{os.path.join(work, 'dense.orders')}", "--duration", "30", "--captured-blocks"], out_dir, work)
+                                   f"script:{os.path.join(work, 'dense.orders')}", "--duration", "30", "--set", "defence.captured_blocks=true"],
+                                   out_dir, work)
                 results[name] = digest
                 table[name] = []
         results = {name: results[name] for name in table}

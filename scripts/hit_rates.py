@@ -49,7 +49,7 @@ def main():
     parser.add_argument("--characters", default="kid,scout,brawler,runner,giant")
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--kumite", default=os.path.join(root, "build", "bin", "kumite"))
-    parser.add_argument("--play-args", default="", help="more arguments for kumite play, e.g. --rest-in-reach")
+    parser.add_argument("--play-args", default="", help="more arguments for kumite play, e.g. '--set keep_distance=false'")
     args = parser.parse_args()
 
     with tempfile.TemporaryDirectory() as work:

@@ -128,7 +128,7 @@ def main():
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     parser.add_argument("--events", default=None, help="a folder to keep each bout's events in")
     parser.add_argument("--kumite", default=os.path.join(root, "build", "bin", "kumite"))
-    parser.add_argument("--play-args", default="", help="more arguments for kumite play, e.g. --captured-blocks")
+    parser.add_argument("--play-args", default="", help="more arguments for kumite play, e.g. '--set defence.captured_blocks=true'")
     args = parser.parse_args()
     args.distances = numbers(args.distance, "--distance", "metres")
     args.delays = numbers(args.order_delay, "--order-delay", "seconds")

@@ -2,7 +2,7 @@
 """kumite play fed by DTrack over loopback UDP in real time with the head (6d body 1) and two hands (6d body 2 and
 3d marker 3) that punch at the fighter: with defence on, the fighter blocks or slips; with --no-defence, it does
 not move to defend and the punches land (those aimed well enough: the sender aims where the head should be, so the
-fighter rests in reach, --rest-in-reach: at its fighting distance these fixed punches fall short).
+fighter rests in reach, keep_distance=false: at its fighting distance these fixed punches fall short).
 
 usage: check_play_dtrack_defence.py KUMITE ANNOTATIONS MOCAP_ROOT
 """
@@ -55,7 +55,7 @@ def bout(kumite, database, work, defence):
     port = random.randint(20000, 60000)
     events = os.path.join(work, f"events_{defence}.jsonl")
     command = [kumite, "play", database, "--character", "brawler", "--tracker", f"dtrack:{port}:1,2,3", "--headless", "--duration", "8.5",
-               "--events", events, "--json", "--rest-in-reach"] + ([] if defence else ["--no-defence"])
+               "--events", events, "--json", "--set", "keep_distance=false"] + ([] if defence else ["--no-defence"])
     player = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     time.sleep(0.3)
     sender = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)

@@ -6,6 +6,7 @@
 #include "partial_file.h"
 #include "play_motion.h"
 #include "play_output.h"
+#include "play_settings.h"
 #include "play_xr.h"
 #include "session_html.h"
 #include "session_log.h"
@@ -38,93 +39,60 @@ constexpr const char* k_xr_default_body = "data/bodies/quaternius-adventurer/Adv
 const CommandSpec& play_spec() {
     static const CommandSpec spec{
         "play",
-        "[DB.kdb] [--character NAME] [--fighters N] [--tracker dtrack:PORT[:HEAD[,LEFT,RIGHT]] | replay:FILE | simulate:KIND|FILE] "
-        "[--commands stdin | tcp:PORT | script:FILE] [--headless] [--viewer-config FILE.json] [--duration S] [--realtime] [--seed N] "
-        "[--aim latched|predicted] [--variety N] [--no-defence] [--captured-blocks [--block-speed-limit RATIO]] [--max-speedup RATIO] [--human-speed] [--superhuman-strikes] [--superhuman-moves] [--superhuman-blocks] [--superhuman-extremities] [--drop-guard] [--no-hit-reactions] [--no-block-handover] [--no-slip-in-reaction] [--rest-in-reach] [--stay-after-strikes] [--play-out-strikes] [--stand-ground] [--no-lead-steps] [--record OUT.bvh|OUT.glb] [--events OUT.jsonl] [--report OUT.json] [--verify]",
-        "Runs the fighter at 60 Hz against the user's head and hands (a DTrack system, a replayed CSV, or a\n"
-        "simulated user) and the supervisor's commands, one per line: punch [left|right] [straight|hook|uppercut]\n"
-        "[low|middle|high], kick [left|right] [front|roundhouse|side] [low|middle|high], slash [left|right] [low|middle|high],\n"
-        "character NAME, aim latched|predicted, defence on|off, quit (in a script file, each line starts with its\n"
-        "time in seconds; on stdin or TCP on 127.0.0.1 they apply when they arrive). Headless runs use a simulated\n"
-        "clock unless --realtime or the tracker is live. With a display and without --headless the viewer opens\n"
-        "(keys listed on screen; it runs until closed, or for --duration when given). Without DB.kdb: $KUMITE_DB, else the reference annotations baked once\n"
-        "and cached (baked again when they or their captures change).",
+        "[DB.kdb] [--tracker SOURCE] [--commands SOURCE] [--character NAME] [--headless --duration S] [--xr] [outputs] [settings]",
+        "Runs the fighter at 60 Hz against the user's head and hands and the supervisor's orders, one per line: punch|kick|\n"
+        "knee|elbow|slash [left|right] [kind] [low|middle|high], character NAME, aim latched|predicted, defence on|off, quit\n"
+        "(docs/room.md). Headless runs use a simulated clock unless --realtime or a live tracker. Without DB.kdb: $KUMITE_DB,\n"
+        "else the reference annotations baked once and cached. Every fighter setting: --print-settings, docs/settings.md.",
         0, 1,
-        {{"character", "NAME", "the starting character (default: the first of data/characters; with --xr the human body of data/bodies)"},
-         {"fighters", "N", "fighters side by side against the same user (default 1)"},
-         {"tracker", "SOURCE", "dtrack:PORT[:BODY] (no BODY: the only 6d body, else the 3d markers' centroid), dtrack:PORT:HEAD,LEFT,RIGHT\n"
-                              "(the hands too: 6d body or 3d marker ids), replay:FILE.csv (t,x,y,z[,lx,ly,lz,rx,ry,rz]), or\n"
-                              "simulate:still|wander|walk[:SPEED]|dodge|dodge-seen|punch|counter|FILE (a user script; default simulate:still), or\n"
-                              "capture:FILE.bvh[:DISTANCE[:START_S]] (a recorded person: its head and hands, facing the fighter, its mean\n"
-                              "head DISTANCE m in front (default 1.2), from START_S s into the capture, looping at its end)"},
+        {{"tracker", "SOURCE", "dtrack:PORT[:HEAD[,LEFT,RIGHT]], replay:FILE.csv, capture:FILE.bvh[:DISTANCE[:START_S]] (a recorded\n"
+                              "person), simulate:still|wander|walk[:SPEED]|dodge|dodge-seen|punch|counter|FILE (default simulate:still)"},
          {"tracker-config", "FILE.json", "the room: bind address, room-to-world transform, room bounds (dtrack)"},
          {"commands", "SOURCE", "stdin, tcp:PORT (127.0.0.1) or script:FILE ('<time_s> <command>' per line)"},
+         {"character", "NAME", "the starting character (default: the first shipped; with --xr the human body of data/bodies)"},
+         {"fighters", "N", "fighters side by side against the same user (default 1)"},
          {"headless", "", "no window (with --xr: no supervisor's window beside the headset)"},
-         {"xr", "", "in an OpenXR headset (the system's runtime; XR_RUNTIME_JSON honoured): its head and grips are the user, both\n"
-                    "eyes drawn into the runtime's swapchains; runs --duration S of bout time (README \"In the headset\")"},
-         {"xr-view-size", "WxH", "with --xr: the size drawn per eye (default: the runtime's recommended size; beyond its largest image,\n"
-                                    "drawn at this size and scaled into it)"},
-         {"xr-eye-image", "OUT.png", "with --xr: the left eye's image near the end of the bout (its geometry in the report's xr.eye_image)"},
-         {"screenshot", "OUT.png", "viewer: save the window after --duration seconds and close (with --xr: the supervisor's window at the end)"},
-         {"viewer-config", "FILE.json", "the wall screen's corners, the eye separation, stereo and camera mode (see runtime/player/README.md)"},
-         {"duration", "S", "seconds to run (default 30)"},
+         {"duration", "S", "seconds to run (default 30; the viewer runs until closed unless it is given)"},
          {"realtime", "", "step on the wall clock"},
          {"seed", "N", "seed of the simulated user (default 1)"},
-         {"lead", "S", "the least time from an order's strike start to its contact (default 0.4 s)"},
-         {"contact-extension", "SHARE", "strikes make contact where the hit point has covered SHARE of its way to the annotated hit, still\n"
-                                        "travelling (default 0.9; 1: at the annotated hit, full extension, the paper's contact)"},
-         {"contact-speed-share", "SHARE", "... or earlier, before the hit point first slows under SHARE of its top speed on the way (default 0.85;\n"
-                                          "0: by extension alone)"},
-         {"plans-per-frame", "N", "at most N fighters plan a strike in one frame, the others on the next frames, oldest order first (default 14; 0: no limit)"},
-         {"steer-until", "S", "predicted aim: the strike follows the head until S before its contact (default 0.15 s; 0: never steers)"},
-         {"variety", "N", "prefer a clip not used in the last N strikes when one scores within 0.15 of the best (default 6, 0: always the best)"},
-         {"max-speedup", "RATIO", "a punch or kick captured slower than a real one lands (5 and 7 m/s) is played up to RATIO times as fast until\n"
-                                  "its contact, which comes when it would as captured (default 1.6, at most 1.9; 1: every strike at its captured speed)"},
-         {"human-speed", "", "no joint of the fighter moves faster than the library's fastest for its kind of move (wrists and ankles\n"
-                             "never over 12 m/s): a move that asks for more is shown lagging (the report's motion.by_move held_back_frames)"},
-         {"rest-in-reach", "", "between strikes the fighter rests where its strikes reach (as the paper's); default: just out of reach\n"
-                               "(0.8-1.2 leg lengths from the user's head), stepping in to strike and out after"},
-         {"stay-after-strikes", "", "after a strike the fighter recovers where it stands, then steps out (default: with no order waiting, it\n"
-                                   "recovers stepping back out to the fighting distance)"},
-         {"play-out-strikes", "", "every strike's captured clip is played to its end (default: 0.15 s after its contact, the impact and\n"
-                                 "the recoil shown, the fighter recovers to its guard from there, free to slip, block and step out)"},
-         {"stand-ground", "", "a user who rushes in while the fighter steps or recovers is met where it stands, stepping back only\n"
-                             "where its clip ends (default: nearer than 0.6 leg lengths, it steps back at once)"},
-         {"lead-steps", "", "steps sized for where a walking user will be (the default; kept for scripts that ask for it)"},
-         {"no-lead-steps", "", "a step is sized for where the user's head is, not where it will be when the step lands (default: for a\n"
-                              "user on a settled course at 0.6 m/s or more, where it will be: one who walks away is caught up with)"},
-         {"superhuman-strikes", "", "a strike's own limb has its elbow or knee free (default: held to the library's fastest for the kind of\n"
-                                   "strike, as every other joint; the strike waits for a fist or foot more than half the hit radius behind)"},
-         {"superhuman-moves", "", "steps, the guard, slips, recoveries, hit reactions and strikes are not held to the library's speeds for\n"
-                                 "their kind (default: they are, as with --human-speed); blocks still are"},
-         {"superhuman-blocks", "", "a block's arm is not held to the library's block speeds (default: it is, as with --human-speed; a\n"
-                                  "block the fist leaves too little time for arrives late; implies --superhuman-moves)"},
-         {"superhuman-extremities", "", "wrists and ankles are not held to a person's 12 m/s (default: they are; a strike that asks for more lags\n"
-                                       "and lands later, its speed at contact at most that)"},
-         {"drop-guard", "", "while striking, the free arm moves as its clip has it (a kata's punch pulls the other hand to the hip;\n"
-                           "default: it stays where the guard had it, covering the face)"},
-         {"no-hit-reactions", "", "a user strike that lands does not move the fighter (default: a captured hit reaction, the way the blow pushed)"},
-         {"no-defence", "", "the fighter does not block or slip the user's strikes (also the command 'defence on|off', the viewer's D key)"},
-         {"no-block-handover", "", "one defence move at a time, held and released before the next (default: a block whose blow is over\n"
-                                   "gives way to the next blow of a combination)"},
-         {"no-slip-in-reaction", "", "while rocked by a blow (a hit reaction) the fighter only covers with its arms (default: it may also slip\n"
-                                     "the next blow, leaning on top of the reaction, never past the trunk's limit)"},
-         {"captured-blocks", "", "block punches with the database's captured blocks when one fits: rising at the head, rising or downward at\n"
-                                 "the chest (events: move block_clip); else the block is synthesized from the guard"},
-         {"block-speed-limit", "RATIO", "captured blocks move the arm at most RATIO times as fast as their clip (1: no faster than captured, no pop);\n"
-                                        "a fist that leaves less time gets past the late forearm (default 0: no limit, every block in time)"},
-         {"aim", "latched|predicted", "strike the head where it was at the order (default), or where it will be at the contact\n"
-                                      "if it keeps its course (also the command 'aim latched|predicted' and the viewer's A key)"},
+         {"aim", "latched|predicted", "the setting aim: strike where the head was at the order (default) or where it will be"},
+         {"no-defence", "", "the setting defence.enabled = false: the fighter neither blocks nor slips"},
+         {"settings", "FILE", "fighter settings, 'name = value' per line (applied before --aim, --no-defence and --set)"},
+         {"set", "NAME=VALUE", "one fighter setting, e.g. --set human_speed=true (repeatable; applied last, in order)", true},
+         {"print-settings", "", "print every setting with its value and meaning, in the form --settings reads, and exit"},
+         {"xr", "", "in an OpenXR headset (the system's runtime; XR_RUNTIME_JSON honoured): its head and grips are the user"},
+         {"xr-view-size", "WxH", "with --xr: the size drawn per eye (default: the runtime's recommended size)"},
+         {"xr-eye-image", "OUT.png", "with --xr: save the left eye's image near the end of the bout"},
+         {"viewer-config", "FILE.json", "the wall screen's corners, eye separation, stereo and camera (runtime/player/README.md)"},
+         {"screenshot", "OUT.png", "viewer: save the window after --duration seconds and close"},
          {"record", "OUT.bvh|OUT.glb", "the first fighter's motion on the starting character (glTF: with its body)"},
-         {"record-user", "OUT.csv", "the user as the tracker gave it, every frame: t,x,y,z[,lx,ly,lz,rx,ry,rz] (replay it with --tracker replay:OUT.csv)"},
+         {"record-user", "OUT.csv", "the user as tracked, every frame: t,x,y,z,lx,ly,lz,rx,ry,rz (replay:OUT.csv plays it back)"},
          {"events", "OUT.jsonl", "one JSON object per event"},
-         {"html", "OUT.html", "the session report: one page with the summary, a timeline, the room from above and distributions (also kumite report)"},
-         {"report", "OUT.json", "frames, frame times, orders, strikes, hits, misses, impacts, overshoot, joint-limit violations, tracker counts"},
+         {"report", "OUT.json", "the bout report: frames, frame times, orders, strikes, hits, speeds, distance, defence"},
+         {"html", "OUT.html", "the session report: summary, timeline, the room from above, distributions"},
          characters_dir_flag(), verify_flag(), json_flag()}};
     return spec;
 }
 
 namespace {
+
+// The fighters' settings: the defaults, then --settings FILE, then --aim and --no-defence, then every --set in order.
+std::optional<int> read_play_settings(const Arguments& arguments, BoutOptions& options) {
+    if (const std::optional<std::string> file = arguments.value("settings")) {
+        if (Result<void> read = play_settings_read(*file, options); !read) return input_error(read.error().message);
+    }
+    if (const std::optional<std::string> text = arguments.value("aim")) {
+        if (Result<void> set = play_setting_assign(options, "aim=" + *text); !set) return usage_error(play_spec(), "--aim: " + set.error().message);
+    }
+    if (arguments.has("no-defence")) options.fighter.defence.enabled = false;
+    for (const std::string& assignment : arguments.all("set")) {
+        if (Result<void> set = play_setting_assign(options, assignment); !set) return usage_error(play_spec(), set.error().message);
+    }
+    if (options.fighter.defence.block_clip_max_speed_ratio > 0.0 && !options.fighter.defence.captured_blocks) {
+        return usage_error(play_spec(), "defence.block_clip_max_speed_ratio limits captured blocks: set defence.captured_blocks = true too");
+    }
+    return std::nullopt;
+}
 
 bool display_present() {
     const char* x11 = std::getenv("DISPLAY");
@@ -141,28 +109,11 @@ int run_play(int argc, char** argv) {
     const Result<long long> seed = arguments.integer("seed", 0, 1LL << 62, 1);
     if (!fighters_count) return usage_error(play_spec(), fighters_count.error().message);
     if (!seed) return usage_error(play_spec(), seed.error().message);
-    const Result<long long> variety = arguments.integer("variety", 0, k_max_variety_recent, 6);
-    if (!variety) return usage_error(play_spec(), variety.error().message);
-    const Result<double> lead_s = arguments.number("lead", 0.0, 5.0, 0.4, "seconds");
-    if (!lead_s) return usage_error(play_spec(), lead_s.error().message);
-    const Result<double> contact_extension = arguments.number("contact-extension", 0.5, 1.0, RetrievalSettings{}.contact_extension, "");
-    if (!contact_extension) return usage_error(play_spec(), contact_extension.error().message);
-    const Result<double> contact_speed_share = arguments.number("contact-speed-share", 0.0, 1.0, RetrievalSettings{}.contact_speed_share, "");
-    if (!contact_speed_share) return usage_error(play_spec(), contact_speed_share.error().message);
-    const Result<double> steer_until_s = arguments.number("steer-until", 0.0, 5.0, FighterSettings{}.steer_until_s, "seconds");
-    if (!steer_until_s) return usage_error(play_spec(), steer_until_s.error().message);
-    const Result<double> max_speedup = arguments.number("max-speedup", 1.0, 1.9, FighterSettings{}.max_speedup, "times the captured speed");
-    if (!max_speedup) return usage_error(play_spec(), max_speedup.error().message);
-    const Result<double> block_speed_limit = arguments.number("block-speed-limit", 0.0, 100.0, 0.0, "times the clip's speed");
-    if (!block_speed_limit) return usage_error(play_spec(), block_speed_limit.error().message);
-    if (*block_speed_limit > 0.0 && !arguments.has("captured-blocks")) return usage_error(play_spec(), "--block-speed-limit applies to --captured-blocks: add it");
-    const Result<long long> plans_per_frame = arguments.integer("plans-per-frame", 0, 100000, BoutOptions{}.plans_per_frame);
-    if (!plans_per_frame) return usage_error(play_spec(), plans_per_frame.error().message);
-    FighterAim aim = FighterAim::latched;
-    if (const std::optional<std::string> text = arguments.value("aim")) {
-        const std::optional<FighterAim> parsed = fighter_aim_from_name(*text);
-        if (!parsed) return usage_error(play_spec(), "--aim must be latched or predicted, not '" + *text + "'");
-        aim = *parsed;
+    BoutOptions options;
+    if (std::optional<int> status = read_play_settings(arguments, options)) return *status;
+    if (arguments.has("print-settings")) {
+        std::cout << play_settings_text(options);
+        return k_exit_ok;
     }
     double duration_s = 30.0;
     if (const std::optional<std::string> text = arguments.value("duration")) {
@@ -234,33 +185,7 @@ int run_play(int argc, char** argv) {
     }
     Result<BoutCast> cast = load_bout_cast(characters_dir, character);
     if (!cast) return cast.error().code == ErrorCode::invalid ? usage_error(play_spec(), cast.error().message) : input_error(cast.error().message);
-    BoutOptions options;
     options.fighters = static_cast<int>(*fighters_count);
-    options.lead_s = *lead_s;
-    options.contact_extension = *contact_extension;
-    options.contact_speed_share = *contact_speed_share;
-    options.fighter.steer_until_s = *steer_until_s;
-    options.fighter.max_speedup = *max_speedup;
-    options.plans_per_frame = static_cast<int>(*plans_per_frame);
-    options.fighter.aim = aim;
-    options.fighter.defence.enabled = !arguments.has("no-defence");
-    options.fighter.defence.keep_guard = !arguments.has("drop-guard");
-    options.fighter.human_speed = arguments.has("human-speed");
-    options.fighter.hit_reactions = !arguments.has("no-hit-reactions");
-    options.fighter.human_speed_blocks = !arguments.has("superhuman-blocks");
-    options.fighter.human_speed_but_strikes = !arguments.has("superhuman-moves") && !arguments.has("superhuman-blocks");
-    options.fighter.human_speed_strikes = !arguments.has("superhuman-strikes");
-    options.fighter.human_extremities = !arguments.has("superhuman-extremities");
-    options.fighter.keep_distance = !arguments.has("rest-in-reach");
-    options.fighter.steps_lead_user = !arguments.has("no-lead-steps");
-    options.fighter.step_out_after_strikes = !arguments.has("stay-after-strikes");
-    if (arguments.has("stand-ground")) options.fighter.crowd_legs = 0.0;
-    if (arguments.has("play-out-strikes")) options.fighter.strike_follow_s = 0.0;
-    options.fighter.defence.captured_blocks = arguments.has("captured-blocks");
-    options.fighter.defence.hand_over_blocks = !arguments.has("no-block-handover");
-    options.fighter.defence.slip_in_hit_reaction = !arguments.has("no-slip-in-reaction");
-    options.fighter.defence.block_clip_max_speed_ratio = *block_speed_limit;
-    options.fighter.variety_recent = static_cast<int>(*variety);
     options.record = arguments.value("record").has_value();
     if (std::optional<std::string> problem = options.record ? recording_path_problem(*arguments.value("record")) : std::nullopt) {
         return usage_error(play_spec(), "--record " + *problem);
@@ -358,6 +283,7 @@ int run_play(int argc, char** argv) {
     nlohmann::json report = play_report_json(bout);
     if (const std::optional<nlohmann::json> source = tracker_source_json(bout)) report["tracker_source"] = *source;
     report["motion"] = motion;
+    report["settings"] = play_settings_json(options);
     report["realtime"] = realtime;
     report["viewer"] = viewer;
     if (xr) report["xr"] = xr_report;

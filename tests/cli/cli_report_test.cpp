@@ -116,7 +116,7 @@ TEST_CASE("cli: report and play --html draw the bout's events, counts equal to t
         CHECK(html.find("<table class=\"motion\">") != std::string::npos);
         CHECK(html.find("<tr class=\"move-punch\">") != std::string::npos);
         CHECK(summary_count(html, "n-strikes") == types["strike"]);
-        // The bout's blocks as its bout_start says: synthesized here (no --captured-blocks).
+        // The bout's blocks as its bout_start says: synthesized here (defence.captured_blocks false).
         CHECK(html.find("<th>blocks</th><td class=\"n blocks\">synthesized</td>") != std::string::npos);
         CHECK(summary_count(html, "n-hits") == hits);
         CHECK(summary_count(html, "n-orders") == report["orders"].get<long long>());

@@ -203,7 +203,7 @@ TEST_CASE("fighter: a low punch is met by a downward captured block, one at the 
 TEST_CASE("fighter: with a block speed limit a captured block moves the arm no faster than its clip", "[runtime][corpus]") {
     const MotionDatabaseContent* content = reference_database();
     if (!content) return;
-    // Issue 26's pop bar, asked for (kumite play --block-speed-limit 1): every captured block's fastest arm move
+    // The pop bar, asked for (kumite play --set defence.block_clip_max_speed_ratio=1): every captured block's fastest arm move
     // (wrist or elbow relative to the shoulder, from the frame it starts) within its clip's own, where without the
     // limit most are faster (the fist leaves 2-8 frames: README, captured blocks). 1% allowed for rounding.
     for (const double limit : {1.0, 0.0}) {

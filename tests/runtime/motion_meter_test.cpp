@@ -209,7 +209,7 @@ TEST_CASE("fighter: no joint moves faster than the library's fastest for its kin
     REQUIRE(meter.frames()[int(MoveKind::punch)] > 30);
     CHECK(held > 0); // the parts asked for more than a person's speed somewhere, and were held to it
 
-    // Without the limit, blocks and wrists included (--superhuman-blocks --superhuman-extremities), the same bout goes
+    // Without the limit, blocks and wrists included (human_speed_but_strikes, human_speed_blocks and human_extremities false), the same bout goes
     // over: the block's arm.
     long long held_free = 0;
     FighterSettings free;
@@ -235,7 +235,7 @@ TEST_CASE("fighter: no joint moves faster than the library's fastest for its kin
         CHECK(fastest.wrist_mps <= 1.002 * k_human_extremity_mps);
         CHECK(fastest.ankle_mps <= 1.002 * k_human_extremity_mps);
     }
-    // The striking limb's elbow or knee free (--superhuman-strikes): a punch's elbow or a kick's knee went over.
+    // The striking limb's elbow or knee free (human_speed_strikes false): a punch's elbow or a kick's knee went over.
     FighterSettings strikes_free;
     strikes_free.human_speed_strikes = false;
     long long held_strikes_free = 0;
@@ -244,7 +244,7 @@ TEST_CASE("fighter: no joint moves faster than the library's fastest for its kin
     const double kick_knee = strikes_free_meter.fastest()[int(MoveKind::kick)].knee_radps / speed_bar(library, MoveKind::kick).knee_radps;
     INFO("striking limb free: punch elbow " << punch_elbow << ", kick knee " << kick_knee << " of the library's");
     CHECK(std::max(punch_elbow, kick_knee) > 1.05);
-    // Only the blocking arm held (--superhuman-moves): the steps' and recoveries' knees, the blocks' legs went over.
+    // Only the blocking arm held (human_speed_but_strikes false): the steps' and recoveries' knees, the blocks' legs went over.
     FighterSettings blocks_only;
     blocks_only.human_speed_but_strikes = false;
     long long held_blocks = 0;
@@ -296,7 +296,7 @@ MotionMeter fast_strikes_bout(const MotionDatabaseView& db, double strike_mps, b
     settings.punch_speed_mps = settings.kick_speed_mps = strike_mps;
     settings.max_speedup = 1.9;
     settings.human_extremities = human_extremities;
-    // Off: the strikes as asked, every limb (--superhuman-strikes --superhuman-moves too).
+    // Off: the strikes as asked, every limb (human_speed_strikes and human_speed_but_strikes false too).
     settings.human_speed_strikes = settings.human_speed_but_strikes = human_extremities;
     kumite::test::Bout bout(db, "giant", settings);
     MotionMeter meter(1);
@@ -328,7 +328,7 @@ TEST_CASE("fighter: asked for strikes faster than a person's, no wrist or ankle 
     int strikes_free = 0, hits_free = 0;
     long long held_free = 0;
     const JointSpeeds free = fast_strikes_bout(content->view(), 30.0, false, strikes_free, hits_free, held_free).fastest_overall();
-    INFO("as asked (--superhuman-extremities --superhuman-strikes): fastest wrist " << free.wrist_mps << " m/s, ankle " << free.ankle_mps);
+    INFO("as asked (human_extremities and human_speed_strikes false): fastest wrist " << free.wrist_mps << " m/s, ankle " << free.ankle_mps);
     CHECK(std::max(free.wrist_mps, free.ankle_mps) > k_human_extremity_mps); // the case exists
     CHECK(held_free == 0);
 
@@ -439,7 +439,7 @@ TEST_CASE("fighter: a strike's own limb at the library's speed lands at that spe
     held_limb.strike_follow_s = 0.0;
     StrikeSpeeds defaults = kata_bout(content->view(), kata, held_limb);
     FighterSettings free_limb = held_limb;
-    free_limb.human_speed_strikes = false; // --superhuman-strikes
+    free_limb.human_speed_strikes = false;
     StrikeSpeeds free = kata_bout(content->view(), kata, free_limb);
     FighterSettings waiting = held_limb;
     waiting.human_speed = true; // every joint held, the strike waiting for its limb every frame
