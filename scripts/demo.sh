@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The main job, from a fresh machine: install what is missing, fetch the captures, build, then show what kumite
 # reads from the reference kick capture, retarget it, bake the reference database, retrieve and adapt a strike,
-# run a 30 s headless bout and, when a display is present, open the viewer on the same bout.
+# open the viewer on a bout when a display is present, and end on a 30 s headless bout's summary and its files.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 "$root/scripts/setup.sh"
@@ -33,17 +33,15 @@ build/bin/kumite query build/demo/ref.kdb --character giant --target 0.1,1.7,0.6
 build/bin/kumite adapt build/demo/ref.kdb --character giant --target 0.1,1.7,0.6 --command punch --side left \
   --record build/demo/giant_punch.bvh --report build/demo/giant_punch.json
 echo
-echo "== kumite play: a 30 s headless bout against a simulated user standing still (events in build/demo/)"
-build/bin/kumite play build/demo/ref.kdb --character brawler --tracker simulate:still --headless --duration 30 \
+display="${DISPLAY:-}${WAYLAND_DISPLAY:-}"
+[[ -z "$display" ]] && echo "(no display, so no viewer after the bout: try xvfb-run -a scripts/demo.sh, or a desktop)" && echo
+echo "== kumite play: a 30 s headless bout against a simulated user who punches back (its summary; the rest in the files)"
+build/bin/kumite play build/demo/ref.kdb --character brawler --tracker simulate:punch --headless --duration 30 \
   --commands script:data/bouts/demo.txt --events build/demo/bout.jsonl --record build/demo/bout.bvh \
-  --report build/demo/bout.json
-cat build/demo/bout.json
-if [[ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ]]; then
+  --report build/demo/bout.json --html build/demo/bout.html
+echo "  also         build/demo/: the retargeted kicks (kick_*.bvh), the adapted punch (giant_punch.bvh), the database (ref.kdb)"
+if [[ -n "$display" ]]; then
   echo
   echo "== kumite play in the viewer (keys on screen: 1-6 strike, C character, V head-coupled camera, Esc quits)"
-  build/bin/kumite play build/demo/ref.kdb --character brawler --tracker simulate:wander \
-    --commands script:data/bouts/demo.txt
-else
-  echo
-  echo "(no display: the viewer would open here; try it with: xvfb-run -a scripts/demo.sh, or on a desktop)"
+  build/bin/kumite play build/demo/ref.kdb --character brawler --tracker simulate:wander --commands script:data/bouts/demo.txt
 fi

@@ -7,6 +7,7 @@
 #include "play_motion.h"
 #include "play_output.h"
 #include "play_settings.h"
+#include "play_summary.h"
 #include "play_xr.h"
 #include "session_html.h"
 #include "session_log.h"
@@ -299,11 +300,12 @@ int run_play(int argc, char** argv) {
     if (arguments.has("json")) {
         print_json(report);
     } else {
-        const BoutCounters& c = bout.counters();
-        std::cout << "played " << c.frames << " frames (" << double(c.frames) / bout.rate_hz() << " s) with " << bout.fighter_count()
-                  << " fighter(s): " << c.orders << " orders, " << c.strikes << " strikes, " << c.hits << " hits, " << c.misses
-                  << " misses, " << c.ignored_orders << " ignored; frame time mean " << report["frame_time_us"]["mean"].get<double>()
-                  << " us, p99 " << report["frame_time_us"]["p99"].get<double>() << " us\n";
+        std::vector<std::pair<std::string, std::string>> files;
+        for (const auto& [flag, what] : {std::pair{"events", "events"}, std::pair{"record", "recording"}, std::pair{"record-user", "user's track"},
+                                         std::pair{"report", "report"}, std::pair{"html", "session page"}}) {
+            if (const std::optional<std::string> path = arguments.value(flag)) files.emplace_back(what, *path);
+        }
+        std::cout << play_summary_text(report, files);
     }
     return k_exit_ok;
 }
