@@ -2,8 +2,8 @@
 """Writes docs/results.md: the figures that matter, from the benchmarks in tests/bench and the bout scripts, run now
 on this machine, with the date, the machine and the build.
 
-  python3 scripts/results.py                 # every figure (tens of minutes); writes docs/results.md
-  python3 scripts/results.py --short -o F.md # each step in a minimal form (a couple of minutes): checks the script runs
+  python3 scripts/results.py                 # every figure (about five minutes on two cores); writes docs/results.md
+  python3 scripts/results.py --short -o F.md # each step in a minimal form (under a minute): checks the script runs
 
   [--build DIR] (default build/)  [--kumite PATH] (default DIR/bin/kumite)  [-o PATH]
 
@@ -232,7 +232,7 @@ NEEDS = {
     "player_bench": [("seconds",), ("fighters", "1", "frame_time_us", "max"), ("fighters", "1", "frames_over_16_7_ms"),
                      ("fighters", "1", "baseline_guard_only_frame_time_us", "p99"), ("fighters", "1", "baseline_planning_in_frame", "slowest_frame_us"),
                      ("fighters", "1", "baseline_planning_in_frame", "frames_over_16_7_ms"), ("fighters", "1", "allocations")],
-    "python_step_bench": [("frames",), ("python_step_us", "p99"), ("baseline_cpp_step_us", "mean"), ("python_over_cpp",)],
+    "python_step_bench": [("frames",), ("python_step_us", "p99"), ("python_step_us", "mean"), ("baseline_cpp_step_us", "mean"), ("python_over_cpp",)],
     "xr_frame_bench": [("seconds",), ("runtime",), ("results", 0, "fighters"), ("results", 0, "frame_work_us", "p99"), ("results", 0, "render_us", "median"),
                        ("results", 0, "frames_submitted"), ("results", 0, "frames_waited"), ("results", 0, "baseline", "p99")],
 }
@@ -518,9 +518,10 @@ def frame_section(bench, bout):
     else:
         lines += ["The headset's frame cost: not measured in this run (below, \"Not measured\").", ""]
     py = bench["python_step"]
-    lines += [f"Stepping a bout from Python (`python_step_bench`, {py['frames']} frames, one fighter): median "
-              f"{f(py['python_step_us']['median'])} µs, p99 {f(py['python_step_us']['p99'])} µs a frame; baseline, the same bout "
-              f"stepped in C++: mean {f(py['baseline_cpp_step_us']['mean'])} µs ({f(py['python_over_cpp'], 2)} times).", ""]
+    lines += [f"Stepping a bout from Python (`python_step_bench`, {py['frames']} frames, one fighter, an order every second): "
+              f"mean {f(py['python_step_us']['mean'])} µs, median {f(py['python_step_us']['median'])} µs, p99 "
+              f"{f(py['python_step_us']['p99'])} µs a frame; baseline, the same bout stepped in C++: mean "
+              f"{f(py['baseline_cpp_step_us']['mean'])} µs (Python's mean {f(py['python_over_cpp'], 2)} times it).", ""]
     return lines
 
 
@@ -551,10 +552,10 @@ def retrieval_section(bench, adapted):
               "frame leaves out the machine's interruptions.", "",
               table(["frame", "median", "p99", "least of 3: median", "p99"], rows), "",
               f"Contact within 1 cm of the target: {pct(overall['contact_within_1cm_rate'])} (contact error median "
-              f"{1000 * overall['contact_error_m']['median']:.2g} mm, p99 {1000 * overall['contact_error_m']['p99']:.2g} mm), "
+              f"{f(1000 * overall['contact_error_m']['median'], 2)} mm, p99 {f(1000 * overall['contact_error_m']['p99'], 2)} mm), "
               f"{overall['joint_limit_violations']} joint-limit violations, largest bone-length error "
               f"{overall['bone_length_error_m_max']:.2g} m, {adaptation['allocations_per_frame']:g} allocations a frame.", ""]
-    rows = [(a["command"], a["target"], f"{1000 * a['contact_error_m']:.2g}", "yes" if a["reachable"] else "no",
+    rows = [(a["command"], a["target"], f(1000 * a["contact_error_m"], 2), "yes" if a["reachable"] else "no",
              f(a["frame_cost_us"].get("median")), f(a["frame_cost_us"].get("p99"))) for a in adapted]
     lines += ["`kumite adapt` on the brawler (target in metres, world):", "",
               table(["order", "target", "contact error (mm)", "reachable", "frame median (µs)", "p99 (µs)"], rows), ""]
@@ -601,14 +602,14 @@ def page(ctx, sections, seconds):
     lines = ["# kumite: results", "",
              "Figures measured by one script on the machine below. Regenerate them with", "",
              "```", "python3 scripts/results.py", "```", "",
-             "(after `scripts/build.sh`; it takes tens of minutes and writes this page; `--short -o FILE` runs every step in "
-             "a minimal form). Every benchmark's baseline is measured in the same run.", "",
+             f"(after `scripts/build.sh`; the run that wrote this page took {seconds / 60.0:.1f} minutes; `--short -o FILE` runs "
+             "every step in a minimal form and writes FILE). Every benchmark's baseline is measured in the same run.", "",
              machine_section(ctx.cache, mode), ""]
     for section in sections:
         lines += section
     lines += ["## Not measured", ""]
     lines += [f"- {note}" for note in ctx.notes] or ["Everything above was measured in this run."]
-    lines += ["", f"This run took {seconds / 60.0:.1f} minutes.", ""]
+    lines += [""]
     return "\n".join(lines)
 
 
