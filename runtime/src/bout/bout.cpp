@@ -58,8 +58,7 @@ Result<std::unique_ptr<Bout>> Bout::create(const MotionDatabaseView& database, s
         bout->m_fighters.push_back(std::make_unique<Fighter>(database, *bout->m_retriever, rigs, settings, library_speeds));
     }
     bout->m_events.reserve(std::size_t(options.fighters) * 64);
-    bout->m_order_frame.assign(std::size_t(options.fighters), -1);
-    bout->m_fighter_state.assign(std::size_t(options.fighters), FighterState::rest);
+    bout->m_tallies.assign(std::size_t(options.fighters), FighterTally{});
     for (auto& fighter : bout->m_fighters) bout->m_fighter_pointers.push_back(fighter.get());
     bout->m_planning = std::make_unique<PlanningBudget>(options.plans_per_frame, bout->m_fighters.size());
     bout->m_queued.reserve(16);
@@ -114,9 +113,7 @@ void Bout::apply(std::string_view line, const std::string& where) {
         command = make_error(ErrorCode::invalid, "unknown character '" + command->argument + "'");
     }
     if (!command) {
-        const std::string message = "error: " + where + command.error().message + "; ignored\n";
-        if (m_stream) m_stream->reply(message);
-        else if (m_message) m_message(message);
+        tell("error: " + where + command.error().message + "; ignored\n");
         return;
     }
     switch (command->verb) {
@@ -151,131 +148,61 @@ void Bout::apply(std::string_view line, const std::string& where) {
     }
 }
 
+void Bout::tell(std::string_view message) {
+    if (m_stream) m_stream->reply(message);
+    else if (m_message) m_message(message);
+}
+
 void Bout::step(double t_s) {
     const auto started = std::chrono::steady_clock::now();
     m_now_s = t_s;
     m_events.clear();
+    take_head(t_s);
+    apply_commands(t_s);
+    m_planning->grant(m_fighter_pointers); // after the frame's orders: who plans a strike this frame
+    for (std::size_t f = 0; f < m_fighters.size(); ++f) {
+        Fighter& fighter = *m_fighters[f];
+        fighter.step(t_s, head(), &m_tracker->hands());
+        take_events(f, fighter);
+        m_motion->measure(int(f), t_s, fighter, m_db, character_anatomy(fighter.character()), head());
+    }
+    record_first_fighter();
+    count_frame(started);
+}
+
+void Bout::take_head(double t_s) {
     // Simulated users punch at the first fighter as it was last frame.
     const Fighter& first = *m_fighters.front();
     m_tracker->set_opponent(first.part_position(BodyPart::head), first.part_position(BodyPart::chest),
                             first.state() != FighterState::strike && first.state() != FighterState::recover);
-    const Eigen::Vector3d* head = m_tracker->head(t_s);
-    if (const char* notice = m_tracker->take_notice()) {
-        if (m_stream) m_stream->reply(notice);
-        else if (m_message) m_message(notice);
-    }
-    m_have_head = head != nullptr;
-    if (head) m_head = *head;
+    const Eigen::Vector3d* tracked = m_tracker->head(t_s);
+    if (const char* notice = m_tracker->take_notice()) tell(notice);
+    m_have_head = tracked != nullptr;
+    if (tracked) m_head = *tracked;
+}
+
+void Bout::apply_commands(double t_s) {
     if (m_has_script) m_script.due(t_s, [&](const CommandScript::Line& line) { apply(line.command, "line " + std::to_string(line.line) + ": "); });
     if (m_stream) m_stream->poll([&](std::string_view line) { apply(line, ""); });
     for (const std::string& line : m_queued) apply(line, "");
     m_queued.clear();
+}
 
-    const long long frame = m_counters.frames;
-    m_planning->grant(m_fighter_pointers); // after the frame's orders: who plans a strike this frame
-    for (std::size_t f = 0; f < m_fighters.size(); ++f) {
-        Fighter& fighter = *m_fighters[f];
-        fighter.step(t_s, m_have_head ? &m_head : nullptr, &m_tracker->hands());
-        for (const FighterEvent& event : fighter.events()) {
-            switch (event.type) {
-            case FighterEvent::Type::order:
-                ++m_counters.orders;
-                m_order_frame[f] = frame;
-                break;
-            case FighterEvent::Type::ignored_order: ++m_counters.ignored_orders; break;
-            case FighterEvent::Type::order_queued:
-                ++m_counters.orders;
-                ++m_counters.orders_queued;
-                break;
-            case FighterEvent::Type::order_performed: ++m_counters.orders_performed; break;
-            case FighterEvent::Type::order_expired: ++m_counters.orders_expired; break;
-            case FighterEvent::Type::state:
-                m_fighter_state[f] = event.state;
-                if (event.state == FighterState::strike && m_order_frame[f] >= 0) {
-                    m_counters.command_to_strike_frames.add(double(frame - m_order_frame[f]));
-                    m_order_frame[f] = -1;
-                }
-                break;
-            case FighterEvent::Type::strike:
-                ++m_counters.strikes;
-                (event.hit ? m_counters.hits : m_counters.misses) += 1;
-                m_counters.last_contact_error_m = event.contact_error_m;
-                m_counters.last_hit = event.hit;
-                m_counters.contact_speed_mps.add(event.effector_speed_mps);
-                if (event.clip >= 0 && event.clip < static_cast<int>(m_db.clips.size())) {
-                    const int segment = m_db.clips[event.clip].segment;
-                    if (segment >= 0 && segment < k_body_part_count) {
-                        const int kind = int(strike_move_kind(static_cast<BodyPart>(segment))) - int(MoveKind::punch);
-                        m_counters.contact_speed_by_kind_mps[std::size_t(kind)].add(event.effector_speed_mps);
-                    }
-                }
-                if (event.clip >= 0 && event.clip < static_cast<int>(m_counters.by_clip.size())) {
-                    m_counters.by_clip[event.clip][0] += 1;
-                    m_counters.by_clip[event.clip][1] += event.hit;
-                }
-                if (event.prediction_error_m < 1e8) m_counters.prediction_error_m.add(event.prediction_error_m);
-                (event.aim == FighterAim::predicted ? m_counters.predicted_strikes : m_counters.latched_strikes) += 1;
-                (event.aim == FighterAim::predicted ? m_counters.predicted_hits : m_counters.latched_hits) += event.hit;
-                break;
-            case FighterEvent::Type::user_strike:
-                ++m_counters.user_strikes;
-                m_counters.blocks += is_block(event.user_strike.move);
-                m_counters.block_clips += event.user_strike.move == DefenceMove::block_clip;
-                m_counters.slips += event.user_strike.move == DefenceMove::slip;
-                break;
-            case FighterEvent::Type::user_strike_end:
-                switch (event.user_strike.outcome) {
-                case UserStrikeOutcome::blocked: ++m_counters.blocked; break;
-                case UserStrikeOutcome::slipped:
-                    ++m_counters.slipped;
-                    m_counters.slipped_on_course += event.user_strike.unslipped_clearance_m <= 0.0;
-                    break;
-                case UserStrikeOutcome::hit_by_user: ++m_counters.hit_by_user; break;
-                case UserStrikeOutcome::missed: ++m_counters.user_missed; break;
-                }
-                ++m_counters.user_outcomes_by_target[event.user_strike.at_head ? 0 : 1][static_cast<int>(event.user_strike.outcome)];
-                ++m_counters.user_outcomes_by_fighter_state[static_cast<std::size_t>(m_fighter_state[f])][static_cast<int>(event.user_strike.outcome)];
-                if (event.user_strike.forearm_to_path_m >= 0.0) m_counters.forearm_to_path_m.add(event.user_strike.forearm_to_path_m);
-                if (const UserStrikeEvent& block = event.user_strike; block.arm_speed_mps >= 0.0) {
-                    if (block.move == DefenceMove::synthesized) m_counters.synthesized_arm_speed_mps.add(block.arm_speed_mps);
-                    if (block.move == DefenceMove::block_clip) {
-                        m_counters.block_clip_arm_speed_mps.add(block.arm_speed_mps);
-                        if (block.clip_arm_speed_mps > 0.0) m_counters.block_clip_speed_ratio.add(block.arm_speed_mps / block.clip_arm_speed_mps);
-                    }
-                }
-                m_counters.defence_joint_limit_violations += event.joint_limit_violations;
-                m_counters.defence_foot_shift_m = std::max(m_counters.defence_foot_shift_m, event.foot_shift_m);
-                break;
-            case FighterEvent::Type::user_strike_course:
-                m_counters.blocked_on_course += event.user_strike.unblocked_clearance_m <= 0.0;
-                break;
-            case FighterEvent::Type::hit_reaction:
-                ++m_counters.hit_reactions;
-                m_counters.hit_reaction_blows += event.reaction_blows;
-                if (event.clip >= 0) {
-                    ++m_counters.captured_hit_reactions;
-                    const double angle_deg = std::acos(std::clamp(event.reaction_fit, -1.0, 1.0)) * 180.0 / 3.14159265358979;
-                    m_counters.hit_reaction_angle_deg.add(std::max(1e-2, angle_deg));
-                }
-                m_counters.hit_reaction_delay_s.add(event.reaction_delay_s);
-                break;
-            case FighterEvent::Type::strike_end:
-                (event.impact ? m_counters.impacts : m_counters.follow_throughs) += 1;
-                if (event.impact) m_counters.impact_overshoot_m.add(event.overshoot_m);
-                if (event.impact) m_counters.impact_held_s.add(event.held_at_target_s);
-                m_counters.joint_limit_violations += event.joint_limit_violations;
-                break;
-            default: break;
-            }
-            if (m_events.size() < m_events.capacity()) m_events.push_back({int(f), event});
-        }
-        fighter.clear_events();
-        m_motion->measure(int(f), t_s, fighter, m_db, character_anatomy(fighter.character()), m_have_head ? &m_head : nullptr);
+void Bout::take_events(std::size_t fighter_index, Fighter& fighter) {
+    for (const FighterEvent& event : fighter.events()) {
+        m_counters.tally(event, m_counters.frames, m_db, m_tallies[fighter_index]);
+        if (m_events.size() < m_events.capacity()) m_events.push_back({int(fighter_index), event});
     }
-    if (m_record_decoder) {
-        m_record_decoder->decode(m_record_pose, m_fighters[0]->mir());
-        clip_append_pose(m_recording, m_record_pose.view());
-    }
+    fighter.clear_events();
+}
+
+void Bout::record_first_fighter() {
+    if (!m_record_decoder) return;
+    m_record_decoder->decode(m_record_pose, m_fighters[0]->mir());
+    clip_append_pose(m_recording, m_record_pose.view());
+}
+
+void Bout::count_frame(std::chrono::steady_clock::time_point started) {
     ++m_counters.frames;
     const double elapsed_us = std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - started).count();
     m_counters.frame_us.add(elapsed_us);

@@ -7,7 +7,7 @@
 
 #include "kumite/core/skinned_mesh.h"
 #include "kumite/formats/bvh_reader.h"
-#include "kumite/runtime/value_histogram.h"
+#include "kumite/runtime/bout_counters.h"
 #include "kumite/runtime/fighter.h"
 #include "kumite/runtime/head_tracker.h"
 #include "kumite/runtime/motion_meter.h"
@@ -15,6 +15,7 @@
 #include "kumite/runtime/supervisor.h"
 
 #include <array>
+#include <chrono>
 #include <functional>
 #include <memory>
 #include <string>
@@ -46,47 +47,6 @@ struct BoutOptions {
 struct BoutEvent {
     int fighter = 0;
     FighterEvent event;
-};
-
-struct BoutCounters {
-    long long frames = 0, missed_frames = 0;
-    long long orders = 0, strikes = 0, hits = 0, misses = 0, ignored_orders = 0;
-    long long orders_queued = 0, orders_performed = 0, orders_expired = 0; // how orders ended (ignored_orders: refused)
-    // Summaries in fixed memory, so that a bout of hours stays flat.
-    ValueHistogram frame_us{0.1, 1e7};          // every frame's cost
-    ValueHistogram command_to_strike_frames{0.5, 1e6};
-    ValueHistogram impact_overshoot_m{1e-5, 10.0}; // per strike that stopped at the target (impact): how far past it
-    ValueHistogram impact_held_s{1e-3, 100.0};     // ... and how long it stayed on the target (FighterEvent::held_at_target_s)
-    ValueHistogram contact_speed_mps{1e-3, 1e3};   // per strike: the hit point's speed arriving at the contact
-    // ... by kind of strike: punch, kick, knee, elbow (MoveKind::punch + i)
-    std::array<ValueHistogram, 4> contact_speed_by_kind_mps{ValueHistogram{1e-3, 1e3}, ValueHistogram{1e-3, 1e3}, ValueHistogram{1e-3, 1e3},
-                                                            ValueHistogram{1e-3, 1e3}};
-    long long joint_limit_violations = 0;       // summed over strikes and frames
-    long long impacts = 0, follow_throughs = 0; // strikes that stopped at the target, strikes the user dodged
-    ValueHistogram prediction_error_m{1e-4, 100.0}; // per strike: the head at the contact to the target aimed at
-    long long latched_strikes = 0, latched_hits = 0, predicted_strikes = 0, predicted_hits = 0; // by aim
-    // The user's strikes at the fighter: how each ended, and how close a blocked one's path came to the forearm.
-    long long user_strikes = 0, blocked = 0, slipped = 0, hit_by_user = 0, user_missed = 0, blocks = 0, slips = 0;
-    long long slipped_on_course = 0; // slipped strikes whose path passed within the hit radius of the part unslipped
-    long long blocked_on_course = 0; // blocked strikes whose course went on to the head or chest
-    long long block_clips = 0; // of the blocks, captured ones (block_clips.h); the rest synthesized
-    std::array<std::array<long long, 4>, 2> user_outcomes_by_target{}; // [head, chest][UserStrikeOutcome]
-    // ... by what the fighter was doing when each ended (FighterState: resting, stepping, striking, in a hit
-    // reaction): where the blows that land get through (issue 44: its own strikes and hit reactions, mostly).
-    std::array<std::array<long long, 4>, k_fighter_state_count> user_outcomes_by_fighter_state{};
-    ValueHistogram forearm_to_path_m{1e-4, 10.0};
-    // Per block, the fastest the blocking wrist or elbow moved relative to the shoulder while the fist came: captured
-    // and synthesized blocks, and a captured one's against the same move in its clip (no pop: at most 1).
-    ValueHistogram block_clip_arm_speed_mps{1e-3, 1e3}, synthesized_arm_speed_mps{1e-3, 1e3}, block_clip_speed_ratio{1e-3, 1e3};
-    long long defence_joint_limit_violations = 0;
-    double defence_foot_shift_m = 0.0; // the largest
-    // The fighter's answers to the blows that landed: how many, from a captured clip, the angle between the clip's
-    // head course and the one the blow asked for, how long after the blow they began.
-    long long hit_reactions = 0, captured_hit_reactions = 0, hit_reaction_blows = 0; // (blows: the landed strikes they answer)
-    ValueHistogram hit_reaction_angle_deg{1e-2, 360.0}, hit_reaction_delay_s{1e-3, 100.0};
-    std::vector<std::array<long long, 2>> by_clip; // [database clip] strikes, hits (sized once, at the bout's start)
-    double last_contact_error_m = -1.0;         // of the last strike; -1 before any
-    bool last_hit = false;
 };
 
 class Bout {
@@ -145,6 +105,13 @@ private:
     struct Character;
     int fighter_character_of(const std::string& name) const;
     void apply(std::string_view line, const std::string& where);
+    void tell(std::string_view message); // to the stream, else the message handler
+    // The frame's parts, in the order step() calls them.
+    void take_head(double t_s);
+    void apply_commands(double t_s);
+    void take_events(std::size_t fighter_index, Fighter& fighter);
+    void record_first_fighter();
+    void count_frame(std::chrono::steady_clock::time_point started);
 
     MotionDatabaseView m_db;
     BoutOptions m_options;
@@ -160,8 +127,7 @@ private:
     std::function<void(std::string_view)> m_message;
     std::vector<std::string> m_queued; // lines from command()
     std::vector<BoutEvent> m_events;
-    std::vector<long long> m_order_frame;
-    std::vector<FighterState> m_fighter_state; // each fighter's, as its state events say
+    std::vector<FighterTally> m_tallies; // what the counters remember of each fighter between its events
     BoutCounters m_counters;
     std::unique_ptr<MotionMeter> m_motion;
     bool m_quit = false;
