@@ -1,6 +1,6 @@
 #pragma once
-// What `kumite play` writes about a bout besides the motion: one JSON object per event (README.md, "The session
-// report"), the lines that frame the bout (bout_start, bout_end) and sample the room (track: the user's head every
+// What `kumite play` writes about a bout besides the motion: one JSON object per event (docs/reports.md, "What a
+// bout writes"), the lines that frame the bout (bout_start, bout_end) and sample the room (track: the user's head every
 // k_track_period_s; fighter_position: where a fighter stands, on the floor, whenever it moved k_position_step_m),
 // the report, and the user's recording. The session report (authoring/report) is drawn from these lines alone.
 

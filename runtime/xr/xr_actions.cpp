@@ -1,5 +1,5 @@
 // The controllers' actions and their suggested bindings (part of XrHeadset: xr_headset.h). The mapping the user
-// reads in the README ("In the headset"): right A punches, right B kicks, left menu (Touch, simple) or left B
+// reads in docs/room.md ("The headset"): right A punches, right B kicks, left menu (Touch, simple) or left B
 // (Index) ends the bout; the simple controller's select asks for a punch (right) or a kick (left).
 #include "xr_headset.h"
 

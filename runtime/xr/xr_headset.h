@@ -2,7 +2,7 @@
 // The headset through OpenXR: the instance (the runtime the system names, XR_RUNTIME_JSON honoured), the HMD system,
 // a session on the current OpenGL (GLX) context, the STAGE space (LOCAL 1.6 m above the floor when the runtime has
 // no STAGE), and the controllers' actions: grip and aim poses, trigger, and the buttons the user can press (punch,
-// kick, quit; README "In the headset"). Every failed OpenXR call is counted and its first messages kept; nothing
+// kick, quit; docs/room.md, "The headset"). Every failed OpenXR call is counted and its first messages kept; nothing
 // throws. One thread: the caller's, with the GL context current.
 
 #include "xr_view_math.h"

@@ -16,7 +16,7 @@
 // The contact's distance counts three times: the wrist's start is blended in over the whole time the fist leaves,
 // the contact's offset has to carry the forearm onto the fist's course, the larger move. Weighted equally, 31% of
 // the blocks against recorded boxers fell back to synthesized ones (the best-scored clip's contact too far);
-// weighted 2, 3 or 4 times, 15-17%, with the punches defended within 2 of each other (README, captured blocks).
+// weighted 2, 3 or 4 times, 15-17%, with the punches defended within 2 of each other (docs/design.md, "Blocks").
 // Both clip points are placed on the fighter's arm as it is now: the clip's arm as captured relative to its
 // shoulder, turned from the clip's heading to the fighter's and scaled by arm length (MIR, mir.h), the elbow by
 // two-bone IK with the clip's swivel; the contact is a third of the way from the wrist to the elbow

@@ -1,6 +1,6 @@
 #pragma once
-// A bout's event as one line of JSON: {"t", "type", "fighter", ...} with the fields of its type (README.md, "The
-// session report"; ../../shared/docs/CLI.md). What `kumite play --events` writes and the C API's events give.
+// A bout's event as one line of JSON: {"t", "type", "fighter", ...} with the fields of its type (docs/reports.md,
+// "What a bout writes"; ../../shared/docs/CLI.md). What `kumite play --events` writes and the C API's events give.
 // Formatting allocates: call it outside the frame's hot path (events are a few a second).
 
 #include "kumite/runtime/bout.h"

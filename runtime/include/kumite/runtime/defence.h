@@ -65,7 +65,7 @@ struct DefenceSettings {
     // 2.5 m/s that makes it a strike, the forearm stayed where its first course pointed).
     double reaim_min_speed_mps = 1.0;
     // Blocks from the database's block clips when one fits (else all synthesized). Off by default: blended in over
-    // the little time a fist leaves, the arm moves about twice as fast as in the captured clip (README, captured blocks).
+    // the little time a fist leaves, the arm moves about twice as fast as in the captured clip (docs/design.md, "Blocks").
     bool captured_blocks = false;
     double block_clip_span_m = 0.15;  // a captured block meets the course between just outside the hit radius (the
                                       // radius and block_contact_m) and this much further out, where its forearm passes
