@@ -103,7 +103,7 @@ Result<CaptureUser> CaptureUser::read(const std::string& path, const CapturePlac
     std::vector<Eigen::Vector3d> positions(skeleton.joint_count()), sites(skeleton.end_sites.size());
     std::vector<Eigen::Quaterniond> rotations(skeleton.joint_count());
     std::vector<Eigen::Vector3d> heads(frames);
-    std::vector<std::array<Eigen::Vector3d, 2>> hands(frames);
+    std::vector<std::array<Eigen::Vector3d, 2>> hands(frames), elbow_positions(frames);
     std::vector<double> lowest(frames);
     Eigen::Vector2d facing_sum = Eigen::Vector2d::Zero(); // (x, z)
     for (int frame = 0; frame < frames; ++frame) {
@@ -120,6 +120,7 @@ Result<CaptureUser> CaptureUser::read(const std::string& path, const CapturePlac
             const Eigen::Vector3d wrist = positions[map.joint(wrists[side])], elbow = positions[map.joint(elbows[side])];
             const Eigen::Vector3d along = wrist - elbow;
             hands[frame][side] = along.norm() > 1e-9 ? Eigen::Vector3d(wrist + along.normalized() * k_fist_past_wrist_m) : wrist;
+            elbow_positions[frame][side] = elbow;
         }
         double low = positions[0].y();
         for (const Eigen::Vector3d& p : positions) low = std::min(low, p.y());
@@ -151,9 +152,13 @@ Result<CaptureUser> CaptureUser::read(const std::string& path, const CapturePlac
     user.m_height_m = file->height_m;
     user.m_heads.resize(frames);
     user.m_hands.resize(frames);
+    user.m_elbows.resize(frames);
     for (int frame = 0; frame < frames; ++frame) {
         user.m_heads[frame] = turn * heads[frame] + shift;
-        for (int side = 0; side < 2; ++side) user.m_hands[frame][side] = turn * hands[frame][side] + shift;
+        for (int side = 0; side < 2; ++side) {
+            user.m_hands[frame][side] = turn * hands[frame][side] + shift;
+            user.m_elbows[frame][side] = turn * elbow_positions[frame][side] + shift;
+        }
     }
     user.m_mean_head = mean_head + shift;
     return user;

@@ -50,6 +50,11 @@ public:
     double performer_height_m() const { return m_height_m; }
     // The performer's standing height and where their mean head is (world), for the events and the report.
     Eigen::Vector3d mean_head() const { return m_mean_head; }
+    // One frame of the capture as placed (world metres): the head, the hands (fists' centres) and the elbows
+    // [left, right] — the elbows for measuring what a tracker without them estimates.
+    const Eigen::Vector3d& frame_head(int frame) const { return m_heads[std::size_t(frame)]; }
+    const std::array<Eigen::Vector3d, 2>& frame_hands(int frame) const { return m_hands[std::size_t(frame)]; }
+    const std::array<Eigen::Vector3d, 2>& frame_elbows(int frame) const { return m_elbows[std::size_t(frame)]; }
 
 private:
     std::string m_path;
@@ -59,6 +64,7 @@ private:
     Eigen::Vector3d m_mean_head = Eigen::Vector3d::Zero();
     std::vector<Eigen::Vector3d> m_heads;            // [frame] world, placed
     std::vector<std::array<Eigen::Vector3d, 2>> m_hands; // [frame][left, right] world, placed
+    std::vector<std::array<Eigen::Vector3d, 2>> m_elbows; // [frame][left, right] world, placed
     int m_loops = 0;
     double m_capture_s = 0.0;
 };
