@@ -115,6 +115,7 @@ nlohmann::json play_report_json(const Bout& bout) {
             {"strikes", counters.strikes},
             {"hits", counters.hits},
             {"misses", counters.misses},
+            {"blocked_by_user", counters.blocked_by_user},
             {"ignored_orders", counters.ignored_orders},
             {"order_outcomes",
              {{"performed", counters.orders_performed}, {"queued", counters.orders_queued}, {"expired", counters.orders_expired},

@@ -24,6 +24,7 @@ constexpr const char* k_defence = "defence";
 constexpr const char* k_reactions = "hit reactions";
 constexpr const char* k_orders = "orders, tracking and crowds";
 constexpr const char* k_filter = "the head filter behind predicted aim";
+constexpr const char* k_guard = "the user's guard";
 
 const auto k_settings = std::to_array<Setting>({
     KUMITE_SETTING(fighter.aim, k_strikes, 0, 0, "",
@@ -134,6 +135,17 @@ const auto k_settings = std::to_array<Setting>({
     KUMITE_SETTING(fighter.hold_s, k_orders, 0, 60, "s", "a fighter that lost the user holds its pose this long, then guards"),
     KUMITE_SETTING(plans_per_frame, k_orders, 0, 100000, "fighters",
                    "at most this many fighters plan a strike in one frame, the others on the next frames (0: no limit)"),
+
+    KUMITE_SETTING(fighter.user_guard.enabled, k_guard, 0, 0, "",
+                   "the user's gloves and forearms stop a strike whose path meets them before the head or trunk: it stops there, "
+                   "blocked (false: the head alone decides, at the contact)"),
+    KUMITE_SETTING(fighter.user_guard.glove_radius_m, k_guard, 0, 0.5, "m", "a glove: a sphere this big around the tracked hand point"),
+    KUMITE_SETTING(fighter.user_guard.forearm_radius_m, k_guard, 0, 0.5, "m", "a forearm: a capsule this thick from the wrist back to the elbow"),
+    KUMITE_SETTING(fighter.user_guard.head_radius_m, k_guard, 0, 0.5, "m", "the user's head: a sphere this big around the tracked head"),
+    KUMITE_SETTING(fighter.user_guard.trunk_radius_m, k_guard, 0, 0.5, "m", "the user's trunk: a capsule this thick from the chest to the belly"),
+    KUMITE_SETTING(fighter.user_guard.striking_radius_m, k_guard, 0, 0.5, "m", "the fighter's fist, foot, knee or elbow: a sphere this big"),
+    KUMITE_SETTING(fighter.user_guard.knuckles_past_wrist_m, k_guard, 0, 0.5, "m",
+                   "the fist's (or foot's) centre lies this far past the wrist (ankle) along the forearm (shin)"),
 
     KUMITE_SETTING(fighter.head_motion.alpha, k_filter, 0, 1, "", "the position gain per sample"),
     KUMITE_SETTING(fighter.head_motion.beta, k_filter, 0, 1, "", "the velocity gain per sample"),

@@ -57,7 +57,9 @@ std::string play_summary_text(const nlohmann::json& report, const std::vector<st
                               std::to_string(count_at(outcomes, "expired")) + " expired, " + std::to_string(count_at(outcomes, "refused")) + " refused");
     const std::string kinds = strikes_by_semantics(report);
     text += row("strikes", std::to_string(count_at(report, "strikes")) + ": " + std::to_string(count_at(report, "hits")) + " hits, " +
-                               std::to_string(count_at(report, "misses")) + " misses" + (kinds.empty() ? "" : "; " + kinds));
+                               std::to_string(count_at(report, "misses")) + " misses" +
+                               (count_at(report, "blocked_by_user") > 0 ? " (" + std::to_string(count_at(report, "blocked_by_user")) + " blocked by the user)" : "") +
+                               (kinds.empty() ? "" : "; " + kinds));
     const nlohmann::json user = report.value("user_strikes", nlohmann::json::object());
     const long long kept_off = count_at(user, "blocked") + count_at(user, "slipped"), landed = count_at(user, "hit_by_user");
     std::string defended = std::to_string(kept_off) + " of " + std::to_string(kept_off + landed);

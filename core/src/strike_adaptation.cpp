@@ -72,6 +72,7 @@ void StrikeAdapter::frame_mir(double index, MirFrame& out) {
 void StrikeAdapter::begin(const StrikePlan& plan, const MirFrame& current, const std::array<bool, 2>& planted,
                           const std::array<Eigen::Vector3d, 2>& ankles_world) {
     m_plan = plan;
+    m_early_stop_index = k_no_early_stop;
     const DbClip& clip = m_db.clips[plan.clip];
     m_frame_count = static_cast<int>(clip.frame_count) - plan.start_frame;
     m_current = current;
@@ -214,7 +215,7 @@ AdaptedFrame StrikeAdapter::at_stop(const AdaptedFrame& result) {
     // The contact as played: the strike stops where it got to, the target or (out of reach) the closest point to
     // it. The target may have moved since begin() (retarget): a point out of reach does not move with it, and the
     // stop point guessed then would pull the fist or foot back across the gap in one frame.
-    if (result.contact) m_stop_point = result.reach == Reach::unreachable ? result.effector : m_plan.target_world;
+    if (result.contact && !stopped_early()) m_stop_point = result.reach == Reach::unreachable ? result.effector : m_plan.target_world;
     return result;
 }
 

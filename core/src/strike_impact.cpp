@@ -23,7 +23,7 @@ double StrikeAdapter::past_stop(const Eigen::Vector3d& point) const {
 }
 
 Eigen::Vector3d StrikeAdapter::impact_correction(const Eigen::Vector3d& point, double index) const {
-    if (!m_impact || index <= contact_index()) return Eigen::Vector3d::Zero();
+    if (!m_impact || (index <= contact_index() && index < m_early_stop_index)) return Eigen::Vector3d::Zero();
     // Past the stop point along approach direction k by g_k: the least move of the hit point that brings each g_k
     // down to softness * (1 - exp(-g_k / softness)) (C1 at g_k = 0, below the softness), and keeps the others
     // within the softness. What goes back or aside from every approach direction (the retraction) is kept.
@@ -41,6 +41,15 @@ Eigen::Vector3d StrikeAdapter::impact_correction(const Eigen::Vector3d& point, d
     const Eigen::Vector3d held = nearest_within_halfspaces(displacement, {m_approaches.data(), std::size_t(m_approach_count)},
                                                            {bounds.data(), std::size_t(m_approach_count)}, Eigen::Vector3d::Zero());
     return held - displacement;
+}
+
+void StrikeAdapter::stop_early(double index, const Eigen::Vector3d& stop_world, const Eigen::Vector3d& direction) {
+    if (!stopped_early()) m_early_stop_index = index;
+    m_stop_point = stop_world;
+    m_approach = direction;
+    m_approaches[0] = direction;
+    m_approach_count = 1;
+    m_impact = true;
 }
 
 bool StrikeAdapter::stop_at_target(LimbPins& pins, double index) const {

@@ -148,7 +148,7 @@ TEST_CASE("bout: a step allocates nothing while a punching user's strikes are de
     CHECK((*bout)->counters().blocks + (*bout)->counters().slips >= 3);
 }
 
-TEST_CASE("bout: a step allocates nothing against a recorded boxer, steering strikes, queuing orders, defending", "[core][corpus]") {
+TEST_CASE("bout: a step allocates nothing against a recorded boxer, steering strikes, queuing orders, defending, its guard in the way", "[core][corpus]") {
     const std::filesystem::path boxer = kumite::test::mocap_root() / "cmu14-boxing" / "box-1.bvh";
     if (!std::filesystem::exists(boxer)) return;
     const MotionDatabase database = golden();
@@ -157,6 +157,7 @@ TEST_CASE("bout: a step allocates nothing against a recorded boxer, steering str
     REQUIRE(tracker);
     BoutOptions options;
     options.fighter.aim = FighterAim::predicted;
+    options.fighter.user_guard.enabled = GENERATE(false, true); // the boxer's gloves and forearms in the strikes' way
     Result<std::unique_ptr<Bout>> bout = Bout::create(database.view(), {{"brawler", brawler.file, nullptr}}, std::move(*tracker), options);
     REQUIRE(bout);
     (*bout)->step(0.0);
@@ -169,6 +170,7 @@ TEST_CASE("bout: a step allocates nothing against a recorded boxer, steering str
     CHECK((*bout)->counters().strikes >= 5);
     CHECK((*bout)->counters().orders_queued >= 3);
     CHECK((*bout)->counters().user_strikes >= 1); // the boxer's punches reached the fighter: the defence ran
+    if (options.fighter.user_guard.enabled) CHECK((*bout)->counters().blocked_by_user >= 1);
 }
 
 TEST_CASE("bout: a step allocates nothing while captured blocks, limited to their clip's speed, meet a punching user", "[core][corpus]") {

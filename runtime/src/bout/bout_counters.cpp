@@ -31,6 +31,7 @@ void BoutCounters::tally(const FighterEvent& event, long long frame, const Motio
     case FighterEvent::Type::strike:
         ++strikes;
         (event.hit ? hits : misses) += 1;
+        blocked_by_user += event.user_block != GuardPart::none;
         last_contact_error_m = event.contact_error_m;
         last_hit = event.hit;
         contact_speed_mps.add(event.effector_speed_mps);

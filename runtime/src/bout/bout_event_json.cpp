@@ -40,7 +40,8 @@ nlohmann::json event_object(const Bout& bout, const BoutEvent& bout_event) {
         break;
     case FighterEvent::Type::state: line["state"] = fighter_state_name(event.state); break;
     case FighterEvent::Type::strike:
-        line["result"] = event.hit ? "hit" : "miss";
+        line["result"] = event.user_block != GuardPart::none ? "blocked" : event.hit ? "hit" : "miss";
+        if (event.user_block != GuardPart::none) line["blocked_by"] = guard_part_name(event.user_block);
         line["contact_error_m"] = event.contact_error_m;
         line["head_distance_m"] = event.head_distance_m;
         line["range_m"] = event.range_m;

@@ -37,6 +37,7 @@ void Fighter::step(double t_s, const Eigen::Vector3d* head, const UserHands* han
     m_parts->user.take_hands(hands);
     if (!m_started) begin(t_s);
     track(t_s, head);
+    m_parts->user.update_guard(m_parts->body.heading().origin);
     defend(t_s);
     take_blow(t_s);
     serve_orders(t_s);

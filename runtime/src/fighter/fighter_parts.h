@@ -20,7 +20,7 @@ namespace kumite {
 struct Fighter::Parts {
     Parts(const MotionDatabaseView& database, const Retriever& retriever, const std::vector<CharacterRig*>& characters, const FighterSettings& settings,
           std::shared_ptr<const LibrarySpeeds> library_speeds)
-        : db(database), speed_limit(library_speeds ? std::move(library_speeds) : measure_library_speeds(database, characters)), user(settings.head_motion), orders(retriever, settings.order_wait_s), footwork(db, settings), player(db, footwork.guard_clip()), strike(db, settings),
+        : db(database), speed_limit(library_speeds ? std::move(library_speeds) : measure_library_speeds(database, characters)), user(settings.head_motion, settings.user_guard), orders(retriever, settings.order_wait_s), footwork(db, settings), player(db, footwork.guard_clip()), strike(db, settings),
           planner(db, retriever, settings), defence(db, settings.defence), reactions(db, *characters.front()),
           body(db, characters, settings.start_x_m, defence.frames(),
                std::array<MirFrame*, 4>{player.frames()[0], player.frames()[1], player.frames()[2], &strike.start_frame()}) {

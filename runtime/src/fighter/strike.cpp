@@ -69,6 +69,9 @@ void Strike::start(double t_s, const Purpose& purpose) {
     m_impact = true;
     m_previous_effector_s = -1.0;
     m_planned_target = m_plan.target_world;
+    m_have_path = false;
+    m_met_body = false;
+    m_user_block = GuardPart::none;
 }
 
 void Strike::carry_over(CharacterBody& body) {
@@ -99,6 +102,7 @@ FighterEvent Strike::event(FighterEvent::Type type, double t_s) const {
     event.reachable = m_purpose.reachable;
     event.steered_m = (m_plan.target_world - m_planned_target).norm();
     event.speedup = m_speedup;
+    event.user_block = m_user_block;
     return event;
 }
 
@@ -127,18 +131,66 @@ void Strike::play(double t_s, CharacterBody& body, const TrackedUser& user) {
     // strike follows through from this frame on.
     const bool at_contact = !m_contact_done && index >= contact;
     steer(to_contact_s - m_clock_s, body, user);
-    if (at_contact) {
+    if (at_contact && m_user_block == GuardPart::none) {
         m_impact = user.tracking() && (aimed_point(user) - m_plan.target_world).norm() <= m_hit_radius_m;
         adapter.set_impact(m_impact);
     }
-    const AdaptedFrame frame = adapter.step(index, body.pose());
+    if (m_user_block != GuardPart::none) follow_block(index, body, user);
+    AdaptedFrame frame = adapter.step(index, body.pose());
     body.show_adapter();
+    const bool blocked = m_settings.user_guard.enabled && meet_guard(index, body, user);
+    if (blocked) {
+        frame = adapter.step(index, body.pose()); // held where the guard met it, from this frame
+        body.show_adapter();
+        m_impact = true; // the strike's contact is here (measure() tells it)
+    }
     m_overshoot_m = std::max(m_overshoot_m, frame.past_target_m);
     m_violations += joint_violation_count(frame.joint_violations);
     body.encode(body.mir()); // what the defence's edits start from
-    m_contact_now = at_contact;
-    if (at_contact) m_contact_done = true;
+    m_contact_now = at_contact || blocked;
+    if (m_contact_now) m_contact_done = true;
     m_over = index >= adapter.frame_count() - 1;
+}
+
+Eigen::Vector3d Strike::striking_point(const CharacterBody& body) const {
+    const BodyPart part = static_cast<BodyPart>(segment());
+    const LimbChain& limb = body.anatomy().limbs[limb_of_segment(part)];
+    const Eigen::Vector3d middle = body.positions()[std::size_t(limb.middle)];
+    if (segment_strikes_with_middle(part)) return middle;
+    const Eigen::Vector3d extremity = body.positions()[std::size_t(limb.extremity)];
+    const Eigen::Vector3d along = extremity - middle;
+    return along.norm() > 1e-6 ? Eigen::Vector3d(extremity + m_settings.user_guard.knuckles_past_wrist_m * along.normalized()) : extremity;
+}
+
+bool Strike::meet_guard(double index, CharacterBody& body, const TrackedUser& user) {
+    if (segment() < 0 || !user.tracking() || m_user_block != GuardPart::none || m_met_body || (m_contact_done && m_impact)) return false;
+    const Eigen::Vector3d point = striking_point(body);
+    const Eigen::Vector3d hit_joint = body.positions()[std::size_t(body.current().adapter.effector_joint())];
+    const bool had_path = m_have_path;
+    const Eigen::Vector3d from = m_previous_striking_point, joint_from = m_previous_hit_joint;
+    m_have_path = true;
+    m_previous_striking_point = point;
+    m_previous_hit_joint = hit_joint;
+    if (!had_path) return false;
+    const GuardContact met = user.guard().first_contact(from, point, m_settings.user_guard.striking_radius_m);
+    if (met.part == GuardPart::head || met.part == GuardPart::trunk) m_met_body = true;
+    if (!guard_part_blocks(met.part)) return false;
+    m_user_block = met.part;
+    m_block_stop = joint_from + met.share * (hit_joint - joint_from);
+    m_block_part_at_touch = user.guard().part_centre(met.part);
+    const Eigen::Vector3d course = point - from;
+    body.current().adapter.stop_early(index, m_block_stop, course.norm() > 1e-9 ? Eigen::Vector3d(course.normalized()) : body.current().adapter.approach_direction());
+    return true;
+}
+
+void Strike::follow_block(double index, CharacterBody& body, const TrackedUser& user) {
+    // The stop moves with the part that blocked, and holds the fist from going on towards where that part is now
+    // (a glove that comes forward to meet it pushes it back, instead of closing over it).
+    StrikeAdapter& adapter = body.current().adapter;
+    const Eigen::Vector3d part = user.guard().part_centre(m_user_block);
+    const Eigen::Vector3d towards = part - striking_point(body);
+    adapter.stop_early(index, m_block_stop + (part - m_block_part_at_touch),
+                       towards.norm() > 1e-6 ? Eigen::Vector3d(towards.normalized()) : adapter.approach_direction());
 }
 
 void Strike::held_back(double share) {
@@ -162,7 +214,7 @@ void Strike::measure(double t_s, CharacterBody& body, const TrackedUser& user, E
         FighterEvent contact_event = event(FighterEvent::Type::strike, t_s);
         contact_event.contact_error_m = (effector - m_plan.target_world).norm();
         contact_event.head_distance_m = user.tracking() ? (effector - aimed_point(user)).norm() : 1e9;
-        contact_event.hit = contact_event.head_distance_m <= m_hit_radius_m;
+        contact_event.hit = m_user_block == GuardPart::none && contact_event.head_distance_m <= m_hit_radius_m;
         contact_event.prediction_error_m = user.tracking() ? (aimed_point(user) - m_plan.target_world).norm() : 1e9;
         if (user.tracking()) contact_event.aimed_point_at_contact = aimed_point(user);
         contact_event.range_m = m_purpose.range_m;

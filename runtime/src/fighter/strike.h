@@ -70,6 +70,13 @@ public:
 
 private:
     void begin(CharacterBody& body); // the body's adapter on m_plan, from m_start_frame
+    // The striking part's centre as shown (world): the fist or foot past the wrist or ankle along the lower bone, or
+    // the elbow or knee itself.
+    Eigen::Vector3d striking_point(const CharacterBody& body) const;
+    // The user's guard along the striking part's path this frame: a glove or forearm met before the head or trunk
+    // stops the strike there (true: step the frame again, held at it); the stop then follows the part (follow_block).
+    bool meet_guard(double index, CharacterBody& body, const TrackedUser& user);
+    void follow_block(double index, CharacterBody& body, const TrackedUser& user);
     void steer(double to_contact_s, CharacterBody& body, const TrackedUser& user);
     Eigen::Vector3d aimed_point(const TrackedUser& user) const { return user.head() + m_purpose.aim_offset; }
     FighterEvent event(FighterEvent::Type type, double t_s) const;
@@ -98,6 +105,14 @@ private:
     Eigen::Vector3d m_planned_target = Eigen::Vector3d::Zero(); // when it began (before steering)
     Eigen::Vector3d m_previous_effector = Eigen::Vector3d::Zero();
     double m_previous_effector_s = 0.0;
+    // The user's guard (FighterSettings::user_guard): the striking part's centre and hit joint last frame, whether
+    // its path met the head or trunk (no block after that), and the part that blocked it, where, and where that
+    // part was then.
+    bool m_have_path = false;
+    Eigen::Vector3d m_previous_striking_point = Eigen::Vector3d::Zero(), m_previous_hit_joint = Eigen::Vector3d::Zero();
+    bool m_met_body = false;
+    GuardPart m_user_block = GuardPart::none;
+    Eigen::Vector3d m_block_stop = Eigen::Vector3d::Zero(), m_block_part_at_touch = Eigen::Vector3d::Zero();
 };
 
 } // namespace kumite

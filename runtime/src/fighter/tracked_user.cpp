@@ -53,4 +53,11 @@ HeadingFrame TrackedUser::facing(const HeadingFrame& heading) const {
     return facing;
 }
 
+void TrackedUser::update_guard(const Eigen::Vector3d& fighter_origin) {
+    if (!m_tracking || !m_guard.settings().enabled) return;
+    Eigen::Vector3d facing = fighter_origin - m_head;
+    facing.y() = 0.0;
+    m_guard.update(m_head, m_hands, facing.norm() > 1e-6 ? Eigen::Vector3d(facing.normalized()) : Eigen::Vector3d(0.0, 0.0, -1.0));
+}
+
 } // namespace kumite

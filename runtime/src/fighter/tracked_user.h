@@ -9,6 +9,7 @@
 #include "kumite/core/heading_frame.h"
 #include "kumite/runtime/head_motion_filter.h"
 #include "kumite/runtime/simulated_hands.h"
+#include "kumite/runtime/user_guard.h"
 
 #include <Eigen/Core>
 
@@ -16,7 +17,7 @@ namespace kumite {
 
 class TrackedUser {
 public:
-    explicit TrackedUser(const HeadMotionSettings& head_motion) : m_head_motion(head_motion) {}
+    TrackedUser(const HeadMotionSettings& head_motion, const UserGuardSettings& guard) : m_head_motion(head_motion), m_guard(guard) {}
 
     // The hands of this frame (none: no hands tracked).
     void take_hands(const UserHands* hands) { m_hands = hands ? *hands : UserHands{}; }
@@ -29,6 +30,10 @@ public:
     const Eigen::Vector3d& head() const { return m_head; } // the last one seen
     const HeadMotionFilter& motion() const { return m_head_motion; }
     const UserHands& hands() const { return m_hands; }
+    // The user's guard this frame (user_guard.h), facing the fighter whose pelvis is over `fighter_origin`: set
+    // once the head and hands of the frame are in, read by the strike.
+    void update_guard(const Eigen::Vector3d& fighter_origin);
+    const UserGuard& guard() const { return m_guard; }
     // From `origin` to the head, on the floor (metres).
     double distance_from(const Eigen::Vector3d& origin) const;
     // `heading` turned towards the head (at most 90 degrees), when the user is tracked; else as it is.
@@ -42,6 +47,7 @@ private:
     double m_last_sample_s = -1e9; // when the head last changed (or held still 0.1 s): the motion filter's last sample
     HeadMotionFilter m_head_motion;
     UserHands m_hands;
+    UserGuard m_guard;
 };
 
 } // namespace kumite

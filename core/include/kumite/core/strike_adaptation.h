@@ -146,6 +146,12 @@ public:
     // Step 6 on (the default at begin()) or off; the fighter turns it off when the user is no longer at the target.
     void set_impact(bool impact) { m_impact = impact; }
     bool impact() const { return m_impact; }
+    // Stops the strike before its contact where something met it (a user's glove or forearm in the way): from frame
+    // `index` on, step 6 holds the hit point from passing `stop_world` along `direction` (unit: its course as it
+    // met it), as it holds a strike that landed at its target, the impact on. Called again (any index) with where
+    // the obstacle is now, the stop follows it. begin() clears it.
+    void stop_early(double index, const Eigen::Vector3d& stop_world, const Eigen::Vector3d& direction);
+    bool stopped_early() const { return m_early_stop_index < k_no_early_stop; }
     // The unit direction in which the hit point arrives at the target over the frame before the contact (world;
     // the impact also holds it along its chords over the 2 to 4 frames before), and where it stops: the target,
     // or out of reach the closest point it gets to at the contact. Found at begin().
@@ -240,6 +246,8 @@ private:
     Eigen::Vector3d m_approach = Eigen::Vector3d::UnitZ();
     Eigen::Vector3d m_stop_point = Eigen::Vector3d::Zero(); // the target, or the closest point reached at the contact
     bool m_impact = true;
+    static constexpr double k_no_early_stop = 1e300;
+    double m_early_stop_index = k_no_early_stop; // stop_early's frame (the contact's stop holds after the contact)
     std::array<double, k_limb_count> m_clip_swivels{}; // the frame's swivels before step 7 changed them
     std::array<TrunkPivot, 3> m_pivots{};
     int m_pivot_count = 0;

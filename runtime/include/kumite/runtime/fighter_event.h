@@ -4,6 +4,7 @@
 // user's strikes at it (seen, and how they ended).
 
 #include "kumite/runtime/defence.h"
+#include "kumite/runtime/user_guard.h"
 #include "kumite/runtime/fighter_settings.h"
 
 #include <Eigen/Core>
@@ -32,6 +33,8 @@ struct FighterEvent {
     bool varied = false;                     // strike events: not the best clip, to vary from the last strikes
     int clip = -1;                           // strike events
     bool hit = false;
+    GuardPart user_block = GuardPart::none;  // strike events: the user's glove or forearm its path met first (the
+                                             // user blocked it: no hit), none when it met none
     double contact_error_m = 0.0;            // effector to the latched target at contact
     double head_distance_m = 0.0;            // effector to the head at contact
     double range_m = 0.0;                    // strike events: pelvis to head on the floor when the strike began

@@ -14,7 +14,8 @@
 namespace kumite {
 
 struct UserGuardSettings {
-    bool enabled = true;               // off: the user's gloves and forearms stop nothing (the head alone decides)
+    bool enabled = false;              // the user's gloves and forearms stop the fighter's strikes that meet them first
+                                       // (off: the head alone decides, at the contact)
     double glove_radius_m = 0.10;      // a boxing glove around the tracked hand point
     double forearm_radius_m = 0.05;
     double head_radius_m = 0.11;
