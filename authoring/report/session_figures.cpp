@@ -56,6 +56,12 @@ std::string glyph(Glyph kind, double x, double y, const std::string& css_class, 
 
 std::string seconds(double t_s) { return fixed(t_s, 2) + " s"; }
 
+// "hit", "miss", or what of the user's guard blocked it.
+std::string strike_result(const StrikeRecord& strike) {
+    if (!strike.blocked_by.empty()) return "blocked by the user's " + strike.blocked_by;
+    return strike.hit ? "hit" : "miss";
+}
+
 std::string strike_words(const StrikeRecord& strike) {
     std::string words = strike.command;
     for (const std::string* part : {&strike.kind, &strike.height, &strike.side}) {
@@ -185,7 +191,7 @@ std::string timeline_svg(const FighterLog& fighter, double duration_s) {
                      seconds(end.t_s) + (refused ? " order refused: " : " order expired: ") + end.why);
     }
     for (const StrikeRecord& strike : fighter.strikes) {
-        std::string title = seconds(strike.t_s) + " " + strike_words(strike) + ": " + (strike.hit ? "hit" : "miss");
+        std::string title = seconds(strike.t_s) + " " + strike_words(strike) + ": " + strike_result(strike);
         if (strike.contact_error_m >= 0.0) title += ", contact error " + fixed(strike.contact_error_m * 100.0, 1) + " cm";
         if (!strike.clip.empty()) title += " (" + strike.clip + ")";
         svg += glyph(strike.hit ? Glyph::hit : Glyph::miss, x_of(strike.t_s), y_of(strike.t_s, 1), strike.hit ? "tl-strike hit" : "tl-strike miss", title);
@@ -261,7 +267,7 @@ std::string top_view_svg(const FighterLog& fighter, const RoomView& view, bool h
             svg += "<line class=\"tv-error\" x1=\"" + px(x) + "\" y1=\"" + px(z) + "\" x2=\"" + px(view.x_px(strike.aimed_point_at_contact->x)) + "\" y2=\"" +
                    px(view.z_px(strike.aimed_point_at_contact->z)) + "\" stroke=\"" + colour::purple + "\" stroke-width=\"1.5\"/>";
         }
-        std::string title = seconds(strike.t_s) + " " + strike_words(strike) + ": " + (strike.hit ? "hit" : "miss");
+        std::string title = seconds(strike.t_s) + " " + strike_words(strike) + ": " + strike_result(strike);
         if (strike.prediction_error_m >= 0.0) title += ", the " + strike.aim + " aim was " + fixed(strike.prediction_error_m * 100.0, 1) + " cm off";
         svg += glyph(strike.hit ? Glyph::hit : Glyph::miss, x, z, strike.hit ? "tv-target hit" : "tv-target miss", title);
     }

@@ -73,7 +73,7 @@ constexpr double k_warning_s = 0.2; // from a cue to a move, a person's
 
 struct FighterCounts {
     long long orders = 0, queued = 0, performed = 0, refused = 0, expired = 0;
-    long long strikes = 0, hits = 0;
+    long long strikes = 0, hits = 0, blocked_by_user = 0;
     long long user_strikes = 0, blocked = 0, slipped = 0, landed = 0, missed = 0, unfinished = 0, unseen = 0, blocks = 0, slips = 0,
               block_clips = 0;
     long long kept_off = 0; // blocked or slipped where the hand would have landed (on course)
@@ -91,7 +91,10 @@ FighterCounts count(const FighterLog& fighter, double duration_s) {
         (end.how == OrderEnd::How::performed ? c.performed : end.how == OrderEnd::How::refused ? c.refused : c.expired) += 1;
     }
     c.strikes = static_cast<long long>(fighter.strikes.size());
-    for (const StrikeRecord& strike : fighter.strikes) c.hits += strike.hit;
+    for (const StrikeRecord& strike : fighter.strikes) {
+        c.hits += strike.hit;
+        c.blocked_by_user += !strike.blocked_by.empty();
+    }
     c.user_strikes = static_cast<long long>(fighter.user_strikes.size());
     for (const UserStrikeRecord& strike : fighter.user_strikes) {
         if (strike.outcome == "blocked") ++c.blocked;
@@ -227,7 +230,7 @@ std::string session_html(const SessionLog& log, const nlohmann::json* play_repor
     for (const auto& [index, fighter] : log.fighters) {
         const FighterCounts c = count(fighter, duration_s);
         for (auto [sum, part] : {std::pair{&total.orders, c.orders}, {&total.performed, c.performed}, {&total.refused, c.refused}, {&total.expired, c.expired},
-                                 {&total.strikes, c.strikes}, {&total.hits, c.hits}, {&total.user_strikes, c.user_strikes}, {&total.blocked, c.blocked},
+                                 {&total.strikes, c.strikes}, {&total.hits, c.hits}, {&total.blocked_by_user, c.blocked_by_user}, {&total.user_strikes, c.user_strikes}, {&total.blocked, c.blocked},
                                  {&total.slipped, c.slipped}, {&total.landed, c.landed}, {&total.missed, c.missed},
                                  {&total.hit_reactions, c.hit_reactions}, {&total.hit_reaction_blows, c.hit_reaction_blows}}) {
             *sum += part;
@@ -264,7 +267,10 @@ std::string session_html(const SessionLog& log, const nlohmann::json* play_repor
     html += "</table><table class=\"totals\">" + count_row("orders", total.orders, "n-orders") + count_row("performed", total.performed, "n-performed", total.orders) +
             count_row("refused", total.refused, "n-refused") + count_row("expired", total.expired, "n-expired");
     if (const std::optional<double> waiting = json_number(end, {"orders_waiting_at_end"})) html += row("waiting at the end", fixed(*waiting, 0));
-    html += count_row("strikes", total.strikes, "n-strikes") + count_row("hits", total.hits, "n-hits", total.strikes) +
+    html += count_row("strikes", total.strikes, "n-strikes") + count_row("hits", total.hits, "n-hits", total.strikes);
+    // The user's guard in the fight (user_guard.enabled): the strikes it stopped, when there were any.
+    if (total.blocked_by_user > 0) html += count_row("blocked by the user's guard", total.blocked_by_user, "n-blocked-by-user", total.strikes);
+    html +=
             count_row("the user's strikes", total.user_strikes, "n-user-strikes") + count_row("blocked", total.blocked, "n-blocked", total.user_strikes) +
             count_row("slipped", total.slipped, "n-slipped", total.user_strikes) + count_row("landed", total.landed, "n-landed", total.user_strikes) +
             count_row("missed", total.missed, "n-missed", total.user_strikes) +

@@ -124,6 +124,7 @@ bool SessionLog::add(const nlohmann::json& line) {
         strike.clip = text(line, "clip");
         strike.aim = text(line, "aim");
         strike.hit = text(line, "result") == "hit";
+        if (text(line, "result") == "blocked") strike.blocked_by = text(line, "blocked_by");
         strike.impact = text(line, "outcome") != "follow_through";
         strike.contact_error_m = number_or(line, "contact_error_m", -1.0);
         strike.effector_speed_mps = number_or(line, "effector_speed_at_contact_mps", -1.0);

@@ -43,6 +43,7 @@ struct StrikeRecord {
     double t_s = 0.0; // the contact
     std::string command, kind, height, side, clip, aim;
     bool hit = false;
+    std::string blocked_by; // the user's glove or forearm that blocked it (empty: none)
     bool impact = true;
     double contact_error_m = -1.0, effector_speed_mps = -1.0, prediction_error_m = -1.0, overshoot_m = -1.0; // -1: none
     std::optional<RoomPoint> target, aimed_point_at_contact;

@@ -206,3 +206,17 @@ TEST_CASE("report: one section per fighter, the many beyond the first ones in a 
     CHECK(summary_count(html, "n-strikes") == 30); // the bout's summary counts every fighter
     CHECK(occurrences(html, "class=\"tv-fighter\"") == std::size_t(kumite::report::k_detailed_fighters));
 }
+
+TEST_CASE("report: strikes the user's guard blocked are counted and named", "[report]") {
+    std::vector<nlohmann::json> lines = bout_lines(4);
+    lines.push_back({{"t", 6.0}, {"type", "strike"}, {"fighter", 0}, {"command", "punch"}, {"kind", "straight"}, {"height", "high"}, {"clip_side", "left"},
+                     {"result", "blocked"}, {"blocked_by", "glove_right"}, {"target", {0.0, 1.6, 1.2}}});
+    const std::string html = kumite::report::session_html(log_of_text(text_of(lines)), nullptr);
+    CHECK(summary_count(html, "n-strikes") == 5);
+    CHECK(summary_count(html, "n-hits") == 2);
+    CHECK(summary_count(html, "n-blocked-by-user") == 1);
+    CHECK(html.find("punch straight high left: blocked by the user") != std::string::npos); // the title escaped
+    CHECK(html.find("glove_right") != std::string::npos);
+    // Without such strikes the row is not there.
+    CHECK(kumite::report::session_html(log_of_text(text_of(bout_lines(4))), nullptr).find("n-blocked-by-user") == std::string::npos);
+}
