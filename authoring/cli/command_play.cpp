@@ -67,7 +67,7 @@ const CommandSpec& play_spec() {
          {"viewer-config", "FILE.json", "the wall screen's corners, eye separation, stereo and camera (runtime/player/README.md)"},
          {"screenshot", "OUT.png", "viewer: save the window after --duration seconds and close"},
          {"record", "OUT.bvh|OUT.glb", "the first fighter's motion on the starting character (glTF: with its body)"},
-         {"record-user", "OUT.csv", "the user as tracked, every frame: t,x,y,z,lx,ly,lz,rx,ry,rz (replay:OUT.csv plays it back)"},
+         {"record-user", "OUT.csv", "the user as tracked, every frame: t, head, hands, elbows (replay:OUT.csv plays it back)"},
          {"events", "OUT.jsonl", "one JSON object per event"},
          {"report", "OUT.json", "the bout report: frames, frame times, orders, strikes, hits, speeds, distance, defence"},
          {"html", "OUT.html", "the session report: summary, timeline, the room from above, distributions"},
@@ -228,7 +228,7 @@ int run_play(int argc, char** argv) {
     std::vector<nlohmann::json> samples;
     if (const std::optional<std::string> path = arguments.value("record-user")) {
         if (Result<void> opened = user_out.open(*path, "the user's recording"); !opened) return input_error(opened.error().message);
-        user_out.stream() << "# t,x,y,z,lx,ly,lz,rx,ry,rz: the user's head and hands (nan: not tracked), world metres\n" << std::fixed;
+        user_out.stream() << "# t,x,y,z,lx,ly,lz,rx,ry,rz,lex,ley,lez,rex,rey,rez: the user's head, hands and the elbows their guard used (nan: not tracked, or the guard off), world metres\n" << std::fixed;
         user_out.stream().precision(6);
     }
     auto after_step = [&] {

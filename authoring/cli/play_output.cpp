@@ -62,6 +62,13 @@ void write_user_line(std::ostream& out, const Bout& bout) {
         if (hands.present[side]) out << "," << hands.world[side].x() << "," << hands.world[side].y() << "," << hands.world[side].z();
         else out << ",nan,nan,nan";
     }
+    // The elbows the user's guard used (tracked or estimated), when it is on and has the hand.
+    const UserGuard& guard = bout.fighter(0).user_guard();
+    for (int side = 0; side < 2; ++side) {
+        const bool elbow = guard.settings().enabled && hands.present[side] && guard.hand(side);
+        if (elbow) out << "," << guard.elbow(side).x() << "," << guard.elbow(side).y() << "," << guard.elbow(side).z();
+        else out << ",nan,nan,nan";
+    }
     out << "\n";
 }
 

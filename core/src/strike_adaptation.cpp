@@ -135,6 +135,7 @@ void StrikeAdapter::begin(const StrikePlan& plan, const MirFrame& current, const
     // alone, it would carry on along the way it came from, across and into the target.
     const Eigen::Vector3d from_root = m_stop_point - m_decoder.model_positions()[m_rig.anatomy().limbs[m_limb].root];
     m_approach_count = 0;
+    m_plane_offsets.fill(0.0);
     for (int back = 1; back <= k_approach_chords && contact_index() - back >= 0; ++back) {
         const Eigen::Vector3d arriving = at_contact.effector - step(contact_index() - back, m_scratch_pose).effector;
         if (arriving.norm() > 0.01) m_approaches[m_approach_count++] = arriving.normalized();

@@ -17,7 +17,7 @@ double StrikeAdapter::past_stop(const Eigen::Vector3d& point) const {
     const Eigen::Vector3d displacement = point - m_stop_point;
     for (int k = 0; k < m_approach_count; ++k) {
         const double along = displacement.dot(m_approaches[k]);
-        if ((displacement - along * m_approaches[k]).norm() <= m_settings.target_radius_m) past = std::max(past, along);
+        if ((displacement - along * m_approaches[k]).norm() <= m_settings.target_radius_m) past = std::max(past, along - m_plane_offsets[k]);
     }
     return past;
 }
@@ -33,8 +33,8 @@ Eigen::Vector3d StrikeAdapter::impact_correction(const Eigen::Vector3d& point, d
     std::array<double, k_approach_chords + 1> bounds{};
     bool past = false;
     for (int k = 0; k < m_approach_count; ++k) {
-        const double along = displacement.dot(m_approaches[k]);
-        bounds[k] = along > 0.0 ? softness * (1.0 - std::exp(-along / softness)) : softness;
+        const double along = displacement.dot(m_approaches[k]) - m_plane_offsets[k];
+        bounds[k] = m_plane_offsets[k] + (along > 0.0 ? softness * (1.0 - std::exp(-along / softness)) : softness);
         past = past || along > 0.0;
     }
     if (!past) return Eigen::Vector3d::Zero();
@@ -48,8 +48,17 @@ void StrikeAdapter::stop_early(double index, const Eigen::Vector3d& stop_world, 
     m_stop_point = stop_world;
     m_approach = direction;
     m_approaches[0] = direction;
+    m_plane_offsets[0] = 0.0;
     m_approach_count = 1;
     m_impact = true;
+}
+
+void StrikeAdapter::stop_early(double index, const Eigen::Vector3d& stop_world, const Eigen::Vector3d& direction, const Eigen::Vector3d& also_stop_world,
+                               const Eigen::Vector3d& also_direction) {
+    stop_early(index, stop_world, direction);
+    m_approaches[1] = also_direction;
+    m_plane_offsets[1] = (also_stop_world - stop_world).dot(also_direction);
+    m_approach_count = 2;
 }
 
 bool StrikeAdapter::stop_at_target(LimbPins& pins, double index) const {

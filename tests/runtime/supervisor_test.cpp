@@ -188,6 +188,20 @@ TEST_CASE("replay: a track with hand columns gives the hands, nan for an untrack
     Result<ReplayTrack> mixed = ReplayTrack::read(path.string());
     REQUIRE_FALSE(mixed.has_value());
     CHECK(mixed.error().message.find(":2:") != std::string::npos);
+    // What --record-user writes: the elbows after the hands, read past; a line of 11 or 17 numbers is refused.
+    std::ofstream(path) << "0.0,0,1.6,1.5,0.2,1.4,1.3,-0.2,1.4,1.3,0.3,1.2,1.4,-0.3,1.2,1.4\n0.1,0,1.6,1.5,nan,nan,nan,-0.1,1.5,1.0,nan,nan,nan,-0.3,1.2,1.3\n";
+    Result<ReplayTrack> with_elbows = ReplayTrack::read(path.string());
+    REQUIRE(with_elbows.has_value());
+    REQUIRE(with_elbows->head(0.12, &hands).has_value());
+    CHECK_FALSE(hands.present[0]);
+    CHECK(hands.world[1].isApprox(Eigen::Vector3d(-0.1, 1.5, 1.0)));
+    for (const char* line : {"0.0,0,1.6,1.5,0.2,1.4,1.3,-0.2,1.4,1.3,0.3\n", "0.0,0,1.6,1.5,0.2,1.4,1.3,-0.2,1.4,1.3,0.3,1.2,1.4,-0.3,1.2,1.4,9\n",
+                             "0.0,0,1.6,1.5,0.2,1.4,1.3,-0.2,1.4,1.3,,1.2,1.4,-0.3,1.2,1.4\n"}) {
+        std::ofstream(path) << line;
+        Result<ReplayTrack> refused = ReplayTrack::read(path.string());
+        REQUIRE_FALSE(refused.has_value());
+        CHECK(refused.error().message.find(":1:") != std::string::npos);
+    }
 }
 
 TEST_CASE("simulated hands: a punching user punches from the guard at the fighter's head and chest at 4-8 m/s", "[runtime]") {

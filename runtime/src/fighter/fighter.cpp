@@ -281,6 +281,7 @@ bool Fighter::busy() const {
 void Fighter::set_defence(bool enabled) { m_parts->defence.defence().settings().enabled = enabled; }
 bool Fighter::defence_enabled() const { return m_parts->defence.defence().enabled(); }
 const Defence& Fighter::defence() const { return m_parts->defence.defence(); }
+const UserGuard& Fighter::user_guard() const { return m_parts->user.guard(); }
 bool Fighter::has_waiting_order() const { return m_parts->orders.has_pending() || m_parts->orders.has_queued(); }
 
 bool Fighter::wants_to_plan() const {

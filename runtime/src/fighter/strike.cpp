@@ -11,6 +11,8 @@ namespace {
 
 constexpr double k_max_strike_speedup = 1.9; // the time warp's pace at the start, 2 - s, stays over 0.1
 constexpr double k_pace_back_s = 0.1;        // after the contact, the clip's clock back to its own pace over this long
+constexpr double k_block_give_m = 0.005;     // how far a blocked blow may press into the part that blocked it
+constexpr int k_block_holds = 2;             // the frame stepped again at most this often to hold it there
 
 } // namespace
 
@@ -144,6 +146,13 @@ void Strike::play(double t_s, CharacterBody& body, const TrackedUser& user) {
         body.show_adapter();
         m_impact = true; // the strike's contact is here (measure() tells it)
     }
+    // The limb turns about the hit joint as it is held (the fist about the wrist, the foot about the ankle): held
+    // off again from where the striking part now is, twice at most.
+    for (int again = 0; again < k_block_holds && m_user_block != GuardPart::none && into_block(body, user) > k_block_give_m; ++again) {
+        follow_block(index, body, user);
+        frame = adapter.step(index, body.pose());
+        body.show_adapter();
+    }
     m_overshoot_m = std::max(m_overshoot_m, frame.past_target_m);
     m_violations += joint_violation_count(frame.joint_violations);
     body.encode(body.mir()); // what the defence's edits start from
@@ -177,20 +186,33 @@ bool Strike::meet_guard(double index, CharacterBody& body, const TrackedUser& us
     if (!guard_part_blocks(met.part)) return false;
     m_user_block = met.part;
     m_block_stop = joint_from + met.share * (hit_joint - joint_from);
-    m_block_part_at_touch = user.guard().part_centre(met.part);
-    const Eigen::Vector3d course = point - from;
-    body.current().adapter.stop_early(index, m_block_stop, course.norm() > 1e-9 ? Eigen::Vector3d(course.normalized()) : body.current().adapter.approach_direction());
+    const Eigen::Vector3d to_target = m_plan.target_world - m_block_stop;
+    m_block_course = to_target.norm() > 1e-6 ? Eigen::Vector3d(to_target.normalized()) : body.current().adapter.approach_direction();
+    hold_off_block(index, body.current().adapter, met.sphere_at_touch, m_block_stop, user.guard());
     return true;
 }
 
 void Strike::follow_block(double index, CharacterBody& body, const TrackedUser& user) {
-    // The stop moves with the part that blocked, and holds the fist from going on towards where that part is now
-    // (a glove that comes forward to meet it pushes it back, instead of closing over it).
-    StrikeAdapter& adapter = body.current().adapter;
-    const Eigen::Vector3d part = user.guard().part_centre(m_user_block);
-    const Eigen::Vector3d towards = part - striking_point(body);
-    adapter.stop_early(index, m_block_stop + (part - m_block_part_at_touch),
-                       towards.norm() > 1e-6 ? Eigen::Vector3d(towards.normalized()) : adapter.approach_direction());
+    // Where the part is this frame, from where the striking part was shown last.
+    hold_off_block(index, body.current().adapter, striking_point(body), body.positions()[std::size_t(body.current().adapter.effector_joint())], user.guard());
+}
+
+double Strike::into_block(const CharacterBody& body, const TrackedUser& user) const {
+    const Eigen::Vector3d striking = striking_point(body);
+    const double reach = user.guard().radius(m_user_block) + m_settings.user_guard.striking_radius_m;
+    return reach - (striking - user.guard().nearest_core(m_user_block, striking)).norm();
+}
+
+void Strike::hold_off_block(double index, StrikeAdapter& adapter, const Eigen::Vector3d& striking, const Eigen::Vector3d& hit_joint, const UserGuard& guard) const {
+    // The striking part may not pass the plane that touches the blocking part on its side (the stop is that plane,
+    // moved from the striking part's centre to the hit joint the adapter holds), nor advance towards its target
+    // past where the block first stopped it: a glove that comes on pushes the blow back; one that moves away leaves it
+    // where it stopped (its force went into the block).
+    const Eigen::Vector3d core = guard.nearest_core(m_user_block, striking);
+    Eigen::Vector3d towards = core - striking;
+    towards = towards.norm() > 1e-6 ? Eigen::Vector3d(towards.normalized()) : m_block_course;
+    const Eigen::Vector3d surface = core - (guard.radius(m_user_block) + m_settings.user_guard.striking_radius_m) * towards;
+    adapter.stop_early(index, surface - (striking - hit_joint), towards, m_block_stop, m_block_course);
 }
 
 void Strike::held_back(double share) {

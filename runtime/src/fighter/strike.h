@@ -74,9 +74,14 @@ private:
     // the elbow or knee itself.
     Eigen::Vector3d striking_point(const CharacterBody& body) const;
     // The user's guard along the striking part's path this frame: a glove or forearm met before the head or trunk
-    // stops the strike there (true: step the frame again, held at it); the stop then follows the part (follow_block).
+    // stops the strike there (true: step the frame again, held at it); the part then pushes the stop back when it comes forward (follow_block).
     bool meet_guard(double index, CharacterBody& body, const TrackedUser& user);
     void follow_block(double index, CharacterBody& body, const TrackedUser& user);
+    // The stop that keeps the striking part (its centre `striking`, the adapter's hit joint at `hit_joint`) out of
+    // the part that blocked it.
+    // How far the striking part is into the part that blocked it (negative: clear of it).
+    double into_block(const CharacterBody& body, const TrackedUser& user) const;
+    void hold_off_block(double index, StrikeAdapter& adapter, const Eigen::Vector3d& striking, const Eigen::Vector3d& hit_joint, const UserGuard& guard) const;
     void steer(double to_contact_s, CharacterBody& body, const TrackedUser& user);
     Eigen::Vector3d aimed_point(const TrackedUser& user) const { return user.head() + m_purpose.aim_offset; }
     FighterEvent event(FighterEvent::Type type, double t_s) const;
@@ -112,7 +117,8 @@ private:
     Eigen::Vector3d m_previous_striking_point = Eigen::Vector3d::Zero(), m_previous_hit_joint = Eigen::Vector3d::Zero();
     bool m_met_body = false;
     GuardPart m_user_block = GuardPart::none;
-    Eigen::Vector3d m_block_stop = Eigen::Vector3d::Zero(), m_block_part_at_touch = Eigen::Vector3d::Zero();
+    Eigen::Vector3d m_block_stop = Eigen::Vector3d::Zero();     // the hit joint where the guard first stopped it
+    Eigen::Vector3d m_block_course = Eigen::Vector3d::UnitZ(); // unit: from there towards the strike's target
 };
 
 } // namespace kumite

@@ -3,6 +3,7 @@
 #include "kumite/core/forward_kinematics.h"
 #include "kumite/core/root_from_feet.h"
 #include "kumite/formats/capture_file.h"
+#include "kumite/runtime/user_guard.h"
 
 #include <Eigen/Geometry>
 
@@ -13,7 +14,6 @@
 namespace kumite {
 namespace {
 
-constexpr double k_fist_past_wrist_m = 0.08;
 constexpr double k_skull_above_head_joint_m = 0.10;
 
 // The End Site hanging from `joint`, or -1.
@@ -119,7 +119,7 @@ Result<CaptureUser> CaptureUser::read(const std::string& path, const CapturePlac
         for (int side = 0; side < 2; ++side) {
             const Eigen::Vector3d wrist = positions[map.joint(wrists[side])], elbow = positions[map.joint(elbows[side])];
             const Eigen::Vector3d along = wrist - elbow;
-            hands[frame][side] = along.norm() > 1e-9 ? Eigen::Vector3d(wrist + along.normalized() * k_fist_past_wrist_m) : wrist;
+            hands[frame][side] = along.norm() > 1e-9 ? Eigen::Vector3d(wrist + along.normalized() * k_fist_centre_past_wrist_m) : wrist;
             elbow_positions[frame][side] = elbow;
         }
         double low = positions[0].y();

@@ -1,10 +1,33 @@
 #include "kumite/runtime/replay_track.h"
 
 #include <cmath>
-#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 
 namespace kumite {
+namespace {
+
+constexpr int k_most_fields = 16;
+
+// The comma-separated numbers of `line` into `values` (at most k_most_fields): how many there were, or -1 when
+// something else is in it (a word, an empty field, more fields than that).
+int read_fields(const std::string& line, double* values) {
+    const char* at = line.c_str();
+    int count = 0;
+    for (;;) {
+        char* end = nullptr;
+        const double value = std::strtod(at, &end);
+        if (end == at || count == k_most_fields) return -1;
+        values[count++] = value;
+        at = end;
+        while (*at == ' ' || *at == '\t' || *at == '\r') ++at;
+        if (*at == '\0') return count;
+        if (*at != ',') return -1;
+        ++at;
+    }
+}
+
+} // namespace
 
 Result<ReplayTrack> ReplayTrack::read(const std::string& path, double max_gap_s) {
     std::ifstream in(path);
@@ -15,16 +38,17 @@ Result<ReplayTrack> ReplayTrack::read(const std::string& path, double max_gap_s)
     for (int number = 1; std::getline(in, line); ++number) {
         const std::size_t first = line.find_first_not_of(" \t\r");
         if (first == std::string::npos || line[first] == '#') continue;
-        double t = 0, x = 0, y = 0, z = 0;
-        double h[6] = {0, 0, 0, 0, 0, 0};
-        char extra = 0;
-        const int fields = std::sscanf(line.c_str(), " %lf , %lf , %lf , %lf , %lf , %lf , %lf , %lf , %lf , %lf %c", &t, &x, &y, &z, &h[0], &h[1],
-                                       &h[2], &h[3], &h[4], &h[5], &extra);
-        const bool with_hands = fields == 10;
+        // t,x,y,z, then the hands (six numbers), then the elbows a recording's guard used (six, not read back: the
+        // replay's guard finds them again the same way).
+        double values[k_most_fields] = {};
+        const int fields = read_fields(line, values);
+        const bool with_hands = fields == 10 || fields == 16;
         if (fields != 4 && !with_hands) {
             if (track.m_times.empty() && (std::isalpha(static_cast<unsigned char>(line[first])) != 0)) continue; // a header
-            return make_error(ErrorCode::invalid, path + ":" + std::to_string(number) + ": expected t,x,y,z or t,x,y,z,lx,ly,lz,rx,ry,rz");
+            return make_error(ErrorCode::invalid, path + ":" + std::to_string(number) + ": expected t,x,y,z or t,x,y,z,lx,ly,lz,rx,ry,rz (and six elbow numbers)");
         }
+        const double t = values[0], x = values[1], y = values[2], z = values[3];
+        const double* h = values + 4;
         if (!track.m_times.empty() && with_hands != !track.m_hands.empty()) {
             return make_error(ErrorCode::invalid, path + ":" + std::to_string(number) + ": every line must have the hands, or none");
         }

@@ -16,7 +16,6 @@ constexpr double k_shoulder_below_head_m = 0.24;
 constexpr double k_shoulder_beside_head_m = 0.18;
 constexpr double k_upper_arm_m = 0.29;
 constexpr double k_elbow_to_fist_m = 0.33;
-constexpr double k_fist_past_wrist_m = 0.07;   // the hand point is the fist's centre, this far past the wrist
 constexpr double k_chest_below_head_m = 0.30;  // the trunk's capsule, from the chest down to the belly
 constexpr double k_pelvis_below_head_m = 0.70;
 
@@ -34,11 +33,15 @@ double first_within_sphere(const Eigen::Vector3d& from, const Eigen::Vector3d& p
     return share >= 0.0 && share <= 1.0 ? share : 2.0;
 }
 
-double distance_to_segment(const Eigen::Vector3d& point, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+Eigen::Vector3d nearest_on_segment(const Eigen::Vector3d& point, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
     const Eigen::Vector3d ab = b - a;
     const double length2 = ab.squaredNorm();
     const double u = length2 > 1e-18 ? std::clamp((point - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-    return (point - (a + u * ab)).norm();
+    return a + u * ab;
+}
+
+double distance_to_segment(const Eigen::Vector3d& point, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    return (point - nearest_on_segment(point, a, b)).norm();
 }
 
 // ... within `reach` of the segment a-b: sampled, then the first crossing bisected (to 1/4096 of the path).
@@ -119,7 +122,7 @@ void UserGuard::update(const Eigen::Vector3d& head, const UserHands& hands, cons
         m_glove[side] = hands.world[side];
         m_elbow[side] = elbows ? (*elbows)[side] : estimate_elbow(head, m_glove[side], right, side);
         const Eigen::Vector3d back = m_elbow[side] - m_glove[side];
-        m_wrist[side] = back.norm() > k_fist_past_wrist_m ? Eigen::Vector3d(m_glove[side] + k_fist_past_wrist_m * back.normalized()) : m_glove[side];
+        m_wrist[side] = back.norm() > k_fist_centre_past_wrist_m ? Eigen::Vector3d(m_glove[side] + k_fist_centre_past_wrist_m * back.normalized()) : m_glove[side];
     }
 }
 
@@ -134,6 +137,28 @@ Eigen::Vector3d UserGuard::part_centre(GuardPart part) const {
     case GuardPart::none: break;
     }
     return m_head;
+}
+
+Eigen::Vector3d UserGuard::nearest_core(GuardPart part, const Eigen::Vector3d& point) const {
+    switch (part) {
+    case GuardPart::trunk: return nearest_on_segment(point, m_chest, m_pelvis);
+    case GuardPart::forearm_l: return nearest_on_segment(point, m_wrist[0], m_elbow[0]);
+    case GuardPart::forearm_r: return nearest_on_segment(point, m_wrist[1], m_elbow[1]);
+    default: return part_centre(part);
+    }
+}
+
+double UserGuard::radius(GuardPart part) const {
+    switch (part) {
+    case GuardPart::head: return m_settings.head_radius_m;
+    case GuardPart::trunk: return m_settings.trunk_radius_m;
+    case GuardPart::glove_l:
+    case GuardPart::glove_r: return m_settings.glove_radius_m;
+    case GuardPart::forearm_l:
+    case GuardPart::forearm_r: return m_settings.forearm_radius_m;
+    case GuardPart::none: break;
+    }
+    return 0.0;
 }
 
 GuardContact UserGuard::first_contact(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double radius) const {

@@ -151,6 +151,11 @@ public:
     // met it), as it holds a strike that landed at its target, the impact on. Called again (any index) with where
     // the obstacle is now, the stop follows it. begin() clears it.
     void stop_early(double index, const Eigen::Vector3d& stop_world, const Eigen::Vector3d& direction);
+    // As stop_early, with a second plane through its own point that the hit point may not pass either (world;
+    // `also_direction` unit): a blocked blow held out of the glove as it is now and from advancing past where
+    // the block first stopped it.
+    void stop_early(double index, const Eigen::Vector3d& stop_world, const Eigen::Vector3d& direction, const Eigen::Vector3d& also_stop_world,
+                    const Eigen::Vector3d& also_direction);
     bool stopped_early() const { return m_early_stop_index < k_no_early_stop; }
     // The unit direction in which the hit point arrives at the target over the frame before the contact (world;
     // the impact also holds it along its chords over the 2 to 4 frames before), and where it stops: the target,
@@ -245,6 +250,9 @@ private:
     int m_approach_count = 0;
     Eigen::Vector3d m_approach = Eigen::Vector3d::UnitZ();
     Eigen::Vector3d m_stop_point = Eigen::Vector3d::Zero(); // the target, or the closest point reached at the contact
+    // Per approach direction, how far along it its plane lies from the stop point (0 but for stop_early's second
+    // plane, which has its own point).
+    std::array<double, k_approach_chords + 1> m_plane_offsets{};
     bool m_impact = true;
     static constexpr double k_no_early_stop = 1e300;
     double m_early_stop_index = k_no_early_stop; // stop_early's frame (the contact's stop holds after the contact)

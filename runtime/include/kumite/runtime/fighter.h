@@ -23,6 +23,7 @@
 #include "kumite/runtime/fighter_settings.h"
 #include "kumite/runtime/joint_speeds.h"
 #include "kumite/runtime/simulated_hands.h"
+#include "kumite/runtime/user_guard.h"
 
 #include <memory>
 #include <span>
@@ -52,6 +53,7 @@ public:
     void set_defence(bool enabled);
     bool defence_enabled() const;
     const Defence& defence() const;
+    const UserGuard& user_guard() const; // the user's guard as this frame's strikes meet it (when user_guard.enabled)
 
     // One frame at time t (seconds). `head`: the user's head this frame, or null when the tracker has none;
     // `hands`: the user's tracked hands, if any.

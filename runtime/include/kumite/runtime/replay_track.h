@@ -1,8 +1,9 @@
 #pragma once
 // Recorded head positions played back: a CSV file of `t,x,y,z` lines (seconds, world metres; '#' comments and a
 // header line without numbers are skipped), optionally with the hands: `t,x,y,z,lx,ly,lz,rx,ry,rz` (a hand written
-// as nan,nan,nan was not tracked then). At time t the head is the latest sample at or before t, unless that
-// sample is older than `max_gap_s` (the recording had lost the head), when there is none.
+// as nan,nan,nan was not tracked then), and after them six numbers of elbows (what --record-user writes; read past).
+// At time t the head is the latest sample at or before t, unless that sample is older than `max_gap_s` (the
+// recording had lost the head), when there is none.
 
 #include "kumite/core/result.h"
 #include "kumite/runtime/simulated_hands.h"

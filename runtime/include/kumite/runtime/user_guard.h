@@ -13,6 +13,10 @@
 
 namespace kumite {
 
+// A fist's centre (the hand point of a tracked or recorded user, and the fighter's knuckles) past the wrist, along
+// the forearm: half a closed hand.
+constexpr double k_fist_centre_past_wrist_m = 0.08;
+
 struct UserGuardSettings {
     bool enabled = false;              // the user's gloves and forearms stop the fighter's strikes that meet them first
                                        // (off: the head alone decides, at the contact)
@@ -21,7 +25,7 @@ struct UserGuardSettings {
     double head_radius_m = 0.11;
     double trunk_radius_m = 0.15;
     double striking_radius_m = 0.05;   // the fighter's fist, foot, knee or elbow
-    double knuckles_past_wrist_m = 0.08; // the fist's centre, along the forearm past the wrist
+    double knuckles_past_wrist_m = k_fist_centre_past_wrist_m; // the fist's centre, along the forearm past the wrist
 };
 
 enum class GuardPart { none, head, trunk, glove_l, glove_r, forearm_l, forearm_r };
@@ -57,6 +61,10 @@ public:
     GuardContact first_contact(const Eigen::Vector3d& from, const Eigen::Vector3d& to, double radius) const;
     // Where the part is now: a glove's or the head's centre, a forearm's middle, the trunk's top.
     Eigen::Vector3d part_centre(GuardPart part) const;
+    // The part's core nearest `point` (a glove's or the head's centre, the nearest point of a forearm's or the
+    // trunk's axis), and its radius about that core.
+    Eigen::Vector3d nearest_core(GuardPart part, const Eigen::Vector3d& point) const;
+    double radius(GuardPart part) const;
 
     const UserGuardSettings& settings() const { return m_settings; }
     bool hand(int side) const { return m_hand[side]; }
