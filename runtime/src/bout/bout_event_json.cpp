@@ -66,6 +66,32 @@ nlohmann::json event_object(const Bout& bout, const BoutEvent& bout_event) {
         line["target_part"] = target_part_name(event.target_part);
         line["reachable"] = event.reachable;
         break;
+    case FighterEvent::Type::user_response: {
+        // The blow as its strike event told it, then the user's answer.
+        const DbClip& clip = bout.database().clips[event.clip];
+        const UserResponse& r = event.response;
+        line["command"] = bout.database().string(clip.semantics);
+        line["kind"] = strike_kind_name(clip.strike_kind());
+        line["height"] = strike_height_name(clip.strike_height());
+        line["clip_side"] = side_text(static_cast<Side>(clip.side));
+        line["target_part"] = target_part_name(event.target_part);
+        line["result"] = event.user_block != GuardPart::none ? "blocked" : event.hit ? "hit" : "miss";
+        if (event.user_block != GuardPart::none) line["blocked_by"] = guard_part_name(event.user_block);
+        line["began_s"] = r.began_s;
+        line["visible_s"] = r.visible_s >= 0.0 ? nlohmann::json(r.visible_s) : nlohmann::json(nullptr);
+        line["contact_s"] = r.contact_s;
+        line["response"] = response_kind_name(r.kind);
+        line["moved"] = r.moved;
+        line["response_s"] = r.moved ? nlohmann::json(r.response_s) : nlohmann::json(nullptr);
+        line["response_time_s"] = r.response_time_s >= 0.0 || (r.moved && r.visible_s >= 0.0) ? nlohmann::json(r.response_time_s) : nlohmann::json(nullptr);
+        line["quality"] = response_quality_name(r.quality);
+        line["countered"] = r.countered;
+        if (r.countered) {
+            line["counter_s"] = r.counter_s;
+            line["counter_landed"] = r.counter_landed;
+        }
+        break;
+    }
     case FighterEvent::Type::strike_end:
         line["clip"] = bout.database().string(bout.database().clips[event.clip].name);
         line["outcome"] = event.impact ? "impact" : "follow_through";

@@ -44,6 +44,19 @@ void Fighter::step(double t_s, const Eigen::Vector3d* head, const UserHands* han
     plan(t_s);
     if (m_state == FighterState::strike) play_strike(t_s);
     else move(t_s);
+    watch_responses(t_s);
+}
+
+void Fighter::watch_responses(double t_s) {
+    Parts& p = *m_parts;
+    ResponseWatch::Blow blow;
+    blow.fighter = p.body.heading().origin;
+    blow.striking = m_state == FighterState::strike && p.strike.segment() >= 0;
+    if (blow.striking) {
+        blow.point = p.strike.striking_point(p.body);
+        blow.target = p.strike.plan().target_world;
+    }
+    p.responses.watch(t_s, blow, p.user, p.log);
 }
 
 void Fighter::begin(double t_s) {

@@ -35,6 +35,27 @@ const char* target_part_name(TargetPart part) {
     return "?";
 }
 
+const char* response_kind_name(ResponseKind kind) {
+    switch (kind) {
+    case ResponseKind::none: return "none";
+    case ResponseKind::block: return "block";
+    case ResponseKind::parry: return "parry";
+    case ResponseKind::slip: return "slip";
+    case ResponseKind::duck: return "duck";
+    case ResponseKind::step_back: return "step_back";
+    }
+    return "none";
+}
+
+const char* response_quality_name(ResponseQuality quality) {
+    switch (quality) {
+    case ResponseQuality::in_time: return "in_time";
+    case ResponseQuality::late: return "late";
+    case ResponseQuality::none: return "none";
+    }
+    return "none";
+}
+
 const char* fighter_event_name(FighterEvent::Type type) {
     switch (type) {
     case FighterEvent::Type::order: return "order";
@@ -48,6 +69,7 @@ const char* fighter_event_name(FighterEvent::Type type) {
     case FighterEvent::Type::user_strike: return "user_strike";
     case FighterEvent::Type::user_strike_end: return "user_strike_end";
     case FighterEvent::Type::user_strike_course: return "user_strike_course";
+    case FighterEvent::Type::user_response: return "user_response";
     case FighterEvent::Type::order_queued: return "order_queued";
     case FighterEvent::Type::order_performed: return "order_performed";
     case FighterEvent::Type::order_expired: return "order_expired";

@@ -8,6 +8,7 @@
 #include "fighter/hit_reactions.h"
 #include "fighter/motion_player.h"
 #include "fighter/order_queue.h"
+#include "fighter/response_watch.h"
 #include "fighter/speed_limit.h"
 #include "fighter/strike.h"
 #include "fighter/strike_planner.h"
@@ -21,7 +22,7 @@ struct Fighter::Parts {
     Parts(const MotionDatabaseView& database, const Retriever& retriever, const std::vector<CharacterRig*>& characters, const FighterSettings& settings,
           std::shared_ptr<const LibrarySpeeds> library_speeds)
         : db(database), speed_limit(library_speeds ? std::move(library_speeds) : measure_library_speeds(database, characters)), user(settings.head_motion, settings.user_guard), orders(retriever, settings.order_wait_s), footwork(db, settings), player(db, footwork.guard_clip()), strike(db, settings),
-          planner(db, retriever, settings), defence(db, settings.defence), reactions(db, *characters.front()),
+          planner(db, retriever, settings), defence(db, settings.defence), reactions(db, *characters.front()), responses(settings.response),
           body(db, characters, settings.start_x_m, defence.frames(),
                std::array<MirFrame*, 4>{player.frames()[0], player.frames()[1], player.frames()[2], &strike.start_frame()}) {
         int joints = 0;
@@ -41,6 +42,7 @@ struct Fighter::Parts {
     StrikePlanner planner;
     FighterDefence defence;
     HitReactions reactions;
+    ResponseWatch responses;
     CharacterBody body; // last: it sizes the frames the others keep
 };
 

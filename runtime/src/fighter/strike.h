@@ -67,12 +67,12 @@ public:
     const StrikePlan& plan() const { return m_plan; }
     int segment() const; // the body part that strikes (the clip's)
     MirFrame& start_frame() { return m_start_frame; } // (for sizing: CharacterBody)
-
-private:
-    void begin(CharacterBody& body); // the body's adapter on m_plan, from m_start_frame
     // The striking part's centre as shown (world): the fist or foot past the wrist or ankle along the lower bone, or
     // the elbow or knee itself.
     Eigen::Vector3d striking_point(const CharacterBody& body) const;
+
+private:
+    void begin(CharacterBody& body); // the body's adapter on m_plan, from m_start_frame
     // The user's guard along the striking part's path this frame: a glove or forearm met before the head or trunk
     // stops the strike there (true: step the frame again, held at it); the part then pushes the stop back when it comes forward (follow_block).
     bool meet_guard(double index, CharacterBody& body, const TrackedUser& user);

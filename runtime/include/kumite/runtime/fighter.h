@@ -107,6 +107,7 @@ private:
     void plan(double t_s);                                // the pending order's strike, when the fighter may plan
     void play_strike(double t_s);                         // the strike's frame; its end starts the recovery
     void move(double t_s);                                // hold, recover, guard and steps
+    void watch_responses(double t_s);                     // the user's answers to the blows (user_response events)
     void show(double t_s);                                // the frame's pose held to human speed, its heading
     void enter(FighterState state, double t_s);
     bool busy() const; // striking, recovering, defending or with an order under way: new orders wait

@@ -6,6 +6,7 @@
 #include "kumite/runtime/defence.h"
 #include "kumite/runtime/user_guard.h"
 #include "kumite/runtime/fighter_settings.h"
+#include "kumite/runtime/user_response.h"
 
 #include <Eigen/Core>
 
@@ -22,7 +23,7 @@ struct FighterEvent {
     // order_expired (it waited order_wait_s, or a later order took its place); it starts as order (taken at once)
     // or order_queued (waiting).
     enum class Type { order, ignored_order, state, strike, strike_end, tracker_lost, tracker_back, character, user_strike, user_strike_end,
-                      order_queued, order_performed, order_expired, hit_reaction, user_strike_course };
+                      order_queued, order_performed, order_expired, hit_reaction, user_strike_course, user_response };
     Type type = Type::state;
     double t_s = 0.0;
     FighterState state = FighterState::rest; // state events: the new state
@@ -66,6 +67,7 @@ struct FighterEvent {
                                              // is played out first)
     int reaction_blows = 0;                  // hit_reaction events: the landed strikes it answers (several landed
                                              // during one strike of the fighter's: one reaction)
+    UserResponse response;                   // user_response events (the rest as the blow's strike event told it)
     int character = -1;                      // character events
     const char* why = "";                    // ignored and expired orders
     double waited_s = 0.0;                   // order_performed and order_expired: since the order came

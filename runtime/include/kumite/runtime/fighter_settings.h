@@ -7,6 +7,7 @@
 #include "kumite/runtime/defence.h"
 #include "kumite/runtime/head_motion_filter.h"
 #include "kumite/runtime/user_guard.h"
+#include "kumite/runtime/user_response.h"
 
 #include <optional>
 #include <string_view>
@@ -95,6 +96,7 @@ struct FighterSettings {
     double surface_depth_m = 0.08;
     DefenceSettings defence;         // blocks and slips against the user's tracked hands (defence.h)
     UserGuardSettings user_guard;    // the user's gloves and forearms in the way of the fighter's strikes (user_guard.h)
+    ResponseSettings response;       // how the user's answers to the fighter's blows are told (user_response.h)
     // With predicted aim, the fighter keeps its eyes on the head during a strike: every frame until this long
     // before the contact it aims again at where the head will be at the contact (the adaptation carries the hit
     // point there); the last `steer_until_s` fly on as they are, as a person's punch does once it is too late to
