@@ -28,6 +28,8 @@ import subprocess
 import sys
 import tempfile
 
+import bout_inputs
+
 GLOVE, FOREARM, HEAD, TRUNK, FIST = 0.10, 0.05, 0.11, 0.15, 0.05
 PAST_WRIST = 0.08
 SUBSTEPS = 24  # the path between two frames, sampled (not solved: an independent reading)
@@ -79,12 +81,7 @@ def user_parts(row):
 def run_bout(job):
     kumite, database, mocap, boxer, character, duration, settings, work = job
     stem = f"{os.path.splitext(os.path.basename(boxer))[0]}-{character}"
-    orders = os.path.join(work, stem + ".orders")
-    with open(orders, "w") as out:
-        t, n = 1.0, 0
-        while t < duration - 1.0:
-            out.write(f"{t:.2f} {'punch' if n % 2 == 0 else 'kick'} {'left' if (n // 2) % 2 == 0 else 'right'}\n")
-            t, n = t + 2.0, n + 1
+    orders = bout_inputs.orders_every_2s(os.path.join(work, stem + ".orders"), duration)
     events, record, user = (os.path.join(work, stem + ext) for ext in (".jsonl", ".bvh", ".csv"))
     command = [kumite, "play", database, "--tracker", f"capture:{os.path.join(mocap, boxer)}:1.2", "--character", character,
                "--aim", "predicted", "--commands", f"script:{orders}", "--headless", "--duration", str(duration),
@@ -189,11 +186,7 @@ def main():
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as work:
-        database = args.database
-        if database.endswith(".json"):
-            database = os.path.join(work, "ref.kdb")
-            subprocess.run([args.kumite, "bake", args.database, "-o", database, "--mocap-root", args.mocap], check=True,
-                           stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        database = bout_inputs.database(args.kumite, args.database, args.mocap, work)
         jobs = [(args.kumite, database, args.mocap, boxer, character, args.duration, args.settings, work)
                 for boxer in args.boxers.split(",") for character in args.characters.split(",")]
         with concurrent.futures.ProcessPoolExecutor(args.jobs) as pool:

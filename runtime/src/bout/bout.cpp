@@ -173,6 +173,8 @@ void Bout::step(double t_s) {
 void Bout::take_head(double t_s) {
     // Simulated users punch at the first fighter as it was last frame.
     const Fighter& first = *m_fighters.front();
+    m_tracker->set_opponent_limbs({first.part_position(BodyPart::hand_l), first.part_position(BodyPart::hand_r), first.part_position(BodyPart::foot_l),
+                                   first.part_position(BodyPart::foot_r)});
     m_tracker->set_opponent(first.part_position(BodyPart::head), first.part_position(BodyPart::chest),
                             first.state() != FighterState::strike && first.state() != FighterState::recover);
     const Eigen::Vector3d* tracked = m_tracker->head(t_s);

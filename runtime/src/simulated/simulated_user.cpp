@@ -2,6 +2,8 @@
 
 #include "kumite/core/smoothstep.h"
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -17,6 +19,13 @@ double dodge_amount(double since) {
     return since < 0.15 ? smoothstep(since / 0.15) : since < 1.15 ? 1.0 : 1.0 - smoothstep((since - 1.15) / 0.15);
 }
 
+// An answer `since` seconds after it began: out over `out_s`, held, back over 0.2 s.
+double answer_amount(double since, double out_s) {
+    constexpr double k_hold_s = 0.75, k_back_s = 0.2;
+    if (since < 0.0 || since > out_s + k_hold_s + k_back_s) return 0.0;
+    return since < out_s ? smoothstep(since / out_s) : since < out_s + k_hold_s ? 1.0 : 1.0 - smoothstep((since - out_s - k_hold_s) / k_back_s);
+}
+
 } // namespace
 
 std::optional<SimulatedKind> simulated_kind_from_name(std::string_view name) {
@@ -27,12 +36,16 @@ std::optional<SimulatedKind> simulated_kind_from_name(std::string_view name) {
     if (name == "dodge-seen") return SimulatedKind::dodge_seen;
     if (name == "punch") return SimulatedKind::punch;
     if (name == "counter") return SimulatedKind::counter;
+    if (name == "slip") return SimulatedKind::slip;
+    if (name == "cover") return SimulatedKind::cover;
+    if (name == "step-back") return SimulatedKind::step_back;
     return std::nullopt;
 }
 
-SimulatedUser::SimulatedUser(SimulatedKind kind, std::uint64_t seed, double walk_speed_mps)
-    : m_kind(kind), m_random{seed}, m_walk_speed_mps(walk_speed_mps) {
-    if (kind == SimulatedKind::counter) m_next_punch_s = 1e18; // only in reply
+SimulatedUser::SimulatedUser(SimulatedKind kind, std::uint64_t seed, double parameter) : m_kind(kind), m_random{seed} {
+    if (kind == SimulatedKind::walk && parameter > 0.0) m_walk_speed_mps = parameter;
+    if (answers(kind) && parameter > 0.0) m_answer_delay_s = parameter;
+    if (kind == SimulatedKind::counter || answers(kind)) m_next_punch_s = 1e18; // only in reply, or never
 }
 
 void SimulatedUser::on_order(double t_s) {
@@ -48,6 +61,15 @@ void SimulatedUser::set_opponent(const Eigen::Vector3d& head, const Eigen::Vecto
         m_dodge_start_s = m_seen_s + k_dodge_delay_s;
         ++m_dodges;
     }
+    if (answers(m_kind) && m_opponent_guarding && !guarding) {
+        m_answer_start_s = m_seen_s + m_answer_delay_s;
+        ++m_answers;
+        m_limbs_at_guard_left = m_opponent_limbs;
+        m_cover_side = -1;
+        Eigen::Vector3d back = m_last_head - head;
+        back.y() = 0.0;
+        m_answer_back = back.norm() > 1e-6 ? Eigen::Vector3d(back.normalized()) : Eigen::Vector3d::UnitZ();
+    }
     m_opponent_guarding = guarding;
 }
 
@@ -57,7 +79,15 @@ Eigen::Vector3d SimulatedUser::head(double t_s) {
     switch (m_kind) {
     case SimulatedKind::still:
     case SimulatedKind::punch:
-    case SimulatedKind::counter: return m_last_head = start;
+    case SimulatedKind::counter:
+    case SimulatedKind::cover: return m_last_head = start;
+    case SimulatedKind::slip:
+    case SimulatedKind::step_back: {
+        const double amount = answer_amount(t_s - m_answer_start_s, 0.15);
+        const Eigen::Vector3d away = m_kind == SimulatedKind::step_back ? Eigen::Vector3d(0.35 * m_answer_back)
+                                                                        : Eigen::Vector3d((m_answers % 2 == 1 ? 0.3 : -0.3), 0.0, 0.0);
+        return m_last_head = start + amount * away;
+    }
     case SimulatedKind::wander:
     case SimulatedKind::walk: {
         const bool walk = m_kind == SimulatedKind::walk;
@@ -87,6 +117,15 @@ Eigen::Vector3d SimulatedUser::head(double t_s) {
 }
 
 UserHands SimulatedUser::hands(double t_s) {
+    if (m_kind == SimulatedKind::cover) {
+        UserHands out = m_hands.hands(t_s, m_last_head);
+        const double amount = answer_amount(t_s - m_answer_start_s, 0.1);
+        if (amount <= 0.0) return out;
+        if (m_cover_side < 0) choose_cover(out);
+        out.world[m_cover_side] += amount * (m_cover_point - out.world[m_cover_side]);
+        return out;
+    }
+    if (answers(m_kind)) return m_hands.hands(t_s, m_last_head);
     if (m_kind != SimulatedKind::punch && m_kind != SimulatedKind::counter) return {};
     if (m_kind == SimulatedKind::counter) { // a reply when the fighter comes back to its guard, else none
         if (m_opponent_guarding && !m_opponent_was_guarding) m_next_punch_s = t_s + 0.3;
@@ -99,6 +138,23 @@ UserHands SimulatedUser::hands(double t_s) {
         m_next_punch_s = m_kind == SimulatedKind::counter ? 1e18 : t_s + m_random.uniform(1.6, 2.4);
     }
     return m_hands.hands(t_s, m_last_head);
+}
+
+void SimulatedUser::choose_cover(const UserHands& guard) {
+    // The fighter's hand or foot that moved most since it left its guard: the blow. The glove nearer its way goes
+    // between it and the head, 15 cm out from the head (a high cover: a blow to the body gets through).
+    int blow = 0;
+    double most = -1e9;
+    for (int limb = 0; limb < 4; ++limb) {
+        const double closing = (m_opponent_limbs[limb] - m_limbs_at_guard_left[limb]).norm();
+        if (closing > most) {
+            most = closing;
+            blow = limb;
+        }
+    }
+    const Eigen::Vector3d from = m_opponent_limbs[blow] - m_last_head;
+    m_cover_point = m_last_head + 0.15 * (from.norm() > 1e-6 ? Eigen::Vector3d(from.normalized()) : Eigen::Vector3d::UnitZ());
+    m_cover_side = (guard.world[0] - m_cover_point).norm() <= (guard.world[1] - m_cover_point).norm() ? 0 : 1;
 }
 
 UserHands ScriptedUser::hands(double t_s) {

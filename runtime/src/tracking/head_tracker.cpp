@@ -11,13 +11,20 @@ Result<std::unique_ptr<HeadTracker>> HeadTracker::open(std::string_view spec_vie
     std::unique_ptr<HeadTracker> tracker(new HeadTracker());
     if (spec.starts_with("simulate:")) {
         const std::string name = spec.substr(9);
-        double walk_speed = 0.8;
+        double walk_speed = 0.8, delay = 0.25;
         char extra = 0;
+        const std::size_t colon = name.find(':');
+        const std::optional<SimulatedKind> answering = colon != std::string::npos ? simulated_kind_from_name(name.substr(0, colon)) : std::nullopt;
         if (name.starts_with("walk:")) {
             if (std::sscanf(name.c_str() + 5, "%lf%c", &walk_speed, &extra) != 1 || !(walk_speed > 0.0) || walk_speed > 3.0) {
                 return make_error(ErrorCode::invalid, "--tracker simulate:walk:SPEED takes metres per second, more than 0 and at most 3, not '" + name + "'");
             }
             tracker->m_simulated.emplace(SimulatedKind::walk, seed, walk_speed);
+        } else if (answering && SimulatedUser::answers(*answering)) {
+            if (std::sscanf(name.c_str() + colon + 1, "%lf%c", &delay, &extra) != 1 || !(delay > 0.0) || delay > 2.0) {
+                return make_error(ErrorCode::invalid, "--tracker simulate:" + name.substr(0, colon) + ":DELAY takes seconds, more than 0 and at most 2, not '" + name + "'");
+            }
+            tracker->m_simulated.emplace(*answering, seed, delay);
         } else if (const std::optional<SimulatedKind> kind = simulated_kind_from_name(name)) {
             tracker->m_simulated.emplace(*kind, seed);
         } else if (std::filesystem::is_regular_file(name)) {
@@ -25,7 +32,7 @@ Result<std::unique_ptr<HeadTracker>> HeadTracker::open(std::string_view spec_vie
             if (!read) return read.error();
             tracker->m_scripted = std::move(*read);
         } else {
-            return make_error(ErrorCode::invalid, "--tracker simulate: takes still, wander, walk[:SPEED], dodge, dodge-seen, punch, counter or a user script file, not '" + name + "'");
+            return make_error(ErrorCode::invalid, "--tracker simulate: takes still, wander, walk[:SPEED], dodge, dodge-seen, punch, counter, slip[:DELAY], cover[:DELAY], step-back[:DELAY] or a user script file, not '" + name + "'");
         }
     } else if (spec.starts_with("dtrack:")) {
         int port = 0, body = config.head_body, left = -1, right = -1;
@@ -52,9 +59,13 @@ Result<std::unique_ptr<HeadTracker>> HeadTracker::open(std::string_view spec_vie
         if (!read) return read.error();
         tracker->m_capture = std::move(*read);
     } else {
-        return make_error(ErrorCode::invalid, "--tracker must be dtrack:PORT[:HEAD[,LEFT,RIGHT]], replay:FILE, capture:FILE.bvh[:DISTANCE[:START_S]] or simulate:still|wander|walk[:SPEED]|dodge|dodge-seen|punch|counter|FILE, not '" + spec + "'");
+        return make_error(ErrorCode::invalid, "--tracker must be dtrack:PORT[:HEAD[,LEFT,RIGHT]], replay:FILE, capture:FILE.bvh[:DISTANCE[:START_S]] or simulate:still|wander|walk[:SPEED]|dodge|dodge-seen|punch|counter|slip|cover|step-back[:DELAY]|FILE, not '" + spec + "'");
     }
     return tracker;
+}
+
+void HeadTracker::set_opponent_limbs(const std::array<Eigen::Vector3d, 4>& limbs) {
+    if (m_simulated) m_simulated->set_opponent_limbs(limbs);
 }
 
 void HeadTracker::set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest, bool guarding) {

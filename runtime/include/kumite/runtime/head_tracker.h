@@ -10,6 +10,7 @@
 #include "kumite/runtime/replay_track.h"
 #include "kumite/runtime/simulated_user.h"
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <string_view>
@@ -35,6 +36,9 @@ public:
     // Where the fighter's head and chest are, and whether it is in its guard (not striking or recovering):
     // simulated users punch at them, some in reply to the guard's return. Call before head(t).
     void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest, bool guarding = true);
+    // Where the fighter's hands and feet are ([left hand, right hand, left foot, right foot], world): what an
+    // answering simulated user sees a blow come from (before set_opponent).
+    void set_opponent_limbs(const std::array<Eigen::Vector3d, 4>& limbs);
     // A supervisor order went out at t: simulated users that dodge react to it.
     void on_order(double t_s);
 

@@ -12,10 +12,16 @@
 //            punches from 0.6-1.0 m, left and right in turn, at the head twice then the chest twice, at 4-8 m/s.
 //   counter — like still, with tracked hands that reply: 0.3 s after each of the fighter's strikes, as it comes
 //            back to its guard, a straight punch as `punch` throws them.
-// Only `punch` and `counter` users have tracked hands.
+//   slip, cover, step-back — answer each of the fighter's strikes DELAY s after it leaves its guard (what the room
+//            shows; `simulate:slip:0.15`, default 0.25), with tracked hands in a guard: `slip` moves the head 0.3 m
+//            aside (left and right in turn), `cover` raises both gloves in front of the face, `step-back` moves the
+//            head 0.35 m back, away from the fighter; out over 0.15 s (the gloves 0.1 s), held 0.75 s, back over
+//            0.2 s. Each answer begins at a frame (the strike's start plus DELAY) that answer_starts() tells.
+// Only `punch`, `counter` and the answering users have tracked hands.
 
 #include <Eigen/Core>
 
+#include <array>
 #include <optional>
 #include <string_view>
 
@@ -28,12 +34,14 @@
 
 namespace kumite {
 
-enum class SimulatedKind { still, wander, walk, dodge, dodge_seen, punch, counter };
+enum class SimulatedKind { still, wander, walk, dodge, dodge_seen, punch, counter, slip, cover, step_back };
 std::optional<SimulatedKind> simulated_kind_from_name(std::string_view name);
 
 class SimulatedUser {
 public:
-    SimulatedUser(SimulatedKind kind, std::uint64_t seed, double walk_speed_mps = 0.8);
+    // `parameter`: walk's speed (m/s), or an answering user's delay (s); <= 0: the kind's default.
+    SimulatedUser(SimulatedKind kind, std::uint64_t seed, double parameter = 0.0);
+    static bool answers(SimulatedKind kind) { return kind == SimulatedKind::slip || kind == SimulatedKind::cover || kind == SimulatedKind::step_back; }
 
     Eigen::Vector3d head(double t_s); // call with non-decreasing times
     void on_order(double t_s);        // the supervisor gave an order at t
@@ -41,14 +49,26 @@ public:
     // (after it).
     void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest, bool guarding = true);
     UserHands hands(double t_s);
+    // The fighter's hands and feet as the room shows them (before set_opponent): [left hand, right hand, left foot,
+    // right foot], world.
+    void set_opponent_limbs(const std::array<Eigen::Vector3d, 4>& limbs) { m_opponent_limbs = limbs; }
 
     static constexpr double k_head_height_m = 1.65;
     static Eigen::Vector3d start_position() { return {0.0, k_head_height_m, 1.5}; }
 
 private:
+    void choose_cover(const UserHands& guard); // cover: which glove goes, and where
+
     SimulatedKind m_kind;
     SplitMix64 m_random;
     double m_walk_speed_mps = 0.8;
+    double m_answer_delay_s = 0.25;
+    double m_answer_start_s = -1e9; // the answer under way (slip, cover, step-back)
+    int m_answers = 0;
+    Eigen::Vector3d m_answer_back = Eigen::Vector3d::UnitZ(); // step-back: away from the fighter when it began
+    std::array<Eigen::Vector3d, 4> m_opponent_limbs{}, m_limbs_at_guard_left{}; // cover: the fighter's hands and feet
+    int m_cover_side = -1;                          // cover: the glove that goes (-1: not chosen yet)
+    Eigen::Vector3d m_cover_point = Eigen::Vector3d::Zero();
     // wander: the current leg of the walk
     Eigen::Vector3d m_from = start_position(), m_to = start_position();
     double m_leg_start_s = 0.0, m_leg_end_s = 0.0;
