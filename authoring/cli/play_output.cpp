@@ -31,6 +31,22 @@ nlohmann::json contact_speed_by_kind(const BoutCounters& counters) {
     return by_kind;
 }
 
+// The user's answers to the fighter's blows, per kind of strike thrown.
+nlohmann::json responses_by_kind(const BoutCounters& counters) {
+    nlohmann::json by_kind = nlohmann::json::object();
+    for (int k = 0; k < 4; ++k) {
+        const BoutCounters::Responses& r = counters.responses_by_kind[std::size_t(k)];
+        if (r.blows == 0) continue;
+        nlohmann::json kinds = nlohmann::json::object(), quality = nlohmann::json::object();
+        for (int i = 0; i < k_response_kind_count; ++i) kinds[response_kind_name(ResponseKind(i))] = r.kinds[std::size_t(i)];
+        for (int i = 0; i < k_response_quality_count; ++i) quality[response_quality_name(ResponseQuality(i))] = r.quality[std::size_t(i)];
+        by_kind[move_kind_name(MoveKind(int(MoveKind::punch) + k))] = {
+            {"blows", r.blows}, {"moved", r.moved}, {"anticipated", r.anticipated}, {"response_time_s", quantiles_of(r.time_s)},
+            {"kinds", kinds}, {"quality", quality}, {"countered", r.countered}, {"counters_landed", r.counters_landed}};
+    }
+    return by_kind;
+}
+
 const char* side_text(Side side) { return side == Side::left ? "left" : side == Side::right ? "right" : "any"; }
 
 nlohmann::json xyz(const Eigen::Vector3d& point) { return {point.x(), point.y(), point.z()}; }
@@ -136,6 +152,7 @@ nlohmann::json play_report_json(const Bout& bout) {
             {"held_at_target_s", quantiles_of(counters.impact_held_s)},
             {"effector_speed_at_contact_mps", quantiles_of(counters.contact_speed_mps)},
             {"effector_speed_at_contact_by_kind_mps", contact_speed_by_kind(counters)},
+            {"user_responses", responses_by_kind(counters)},
             {"joint_limit_violations", counters.joint_limit_violations},
             {"aim", fighter_aim_name(bout.fighter(0).aim())},
             {"by_kind", by_kind},

@@ -67,6 +67,17 @@ std::string play_summary_text(const nlohmann::json& report, const std::vector<st
     text += row("user's blows", std::to_string(count_at(user, "seen")) + " seen: " + std::to_string(count_at(user, "blocked")) + " blocked, " +
                                     std::to_string(count_at(user, "slipped")) + " slipped, " + std::to_string(landed) + " landed; defended " + defended +
                                     (report.value("defence", true) ? "" : " (defence off)"));
+    const nlohmann::json responses = report.value("user_responses", nlohmann::json::object());
+    if (!responses.empty()) {
+        std::string answers;
+        for (const auto& [kind, r] : responses.items()) {
+            const long long timed = count_at(r, "moved") - count_at(r, "anticipated");
+            answers += (answers.empty() ? "" : "; ") + kind + " " + std::to_string(count_at(r, "blows")) + " (" + std::to_string(count_at(r, "moved")) + " answered" +
+                       (timed > 0 ? ", median " + fixed(number_at(r, pointer("/response_time_s/median")), 2) + " s" : "") + ", " +
+                       std::to_string(std::llround(number_at(r, pointer("/quality/in_time")))) + " in time)";
+        }
+        text += row("user answers", answers);
+    }
     text += row("fastest", "wrist " + fixed(number_at(report, pointer("/motion/fastest/wrist_mps")), 1) + " m/s, ankle " +
                                fixed(number_at(report, pointer("/motion/fastest/ankle_mps")), 1) + " m/s");
     if (number_at(report, pointer("/motion/distance_between_strikes/frames")) > 0) {

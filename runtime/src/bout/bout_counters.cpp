@@ -98,6 +98,23 @@ void BoutCounters::tally(const FighterEvent& event, long long frame, const Motio
         if (event.impact) impact_held_s.add(event.held_at_target_s);
         joint_limit_violations += event.joint_limit_violations;
         break;
+    case FighterEvent::Type::user_response: {
+        const int segment = event.clip >= 0 && event.clip < static_cast<int>(database.clips.size()) ? database.clips[event.clip].segment : -1;
+        if (segment < 0 || segment >= k_body_part_count) break;
+        Responses& r = responses_by_kind[std::size_t(int(strike_move_kind(static_cast<BodyPart>(segment))) - int(MoveKind::punch))];
+        const UserResponse& response = event.response;
+        ++r.blows;
+        r.moved += response.moved;
+        r.countered += response.countered;
+        r.counters_landed += response.counter_landed;
+        ++r.kinds[std::size_t(response.kind)];
+        ++r.quality[std::size_t(response.quality)];
+        if (response.moved && response.visible_s >= 0.0) {
+            if (response.response_time_s < 0.0) ++r.anticipated;
+            else r.time_s.add(response.response_time_s);
+        }
+        break;
+    }
     default: break;
     }
 }

@@ -57,6 +57,15 @@ struct BoutCounters {
     // head course and the one the blow asked for, how long after the blow they began.
     long long hit_reactions = 0, captured_hit_reactions = 0, hit_reaction_blows = 0; // (blows: the landed strikes they answer)
     ValueHistogram hit_reaction_angle_deg{1e-2, 360.0}, hit_reaction_delay_s{1e-3, 100.0};
+    // The user's answers to the fighter's blows (user_response events), by kind of strike: punch, kick, knee, elbow.
+    struct Responses {
+        long long blows = 0, moved = 0, countered = 0, counters_landed = 0;
+        long long anticipated = 0; // moved before the blow was visible (a negative response time: not in time_s)
+        std::array<long long, k_response_kind_count> kinds{};
+        std::array<long long, k_response_quality_count> quality{};
+        ValueHistogram time_s{1e-3, 10.0}; // response times from the blow's visible start
+    };
+    std::array<Responses, 4> responses_by_kind;
     std::vector<std::array<long long, 2>> by_clip; // [database clip] strikes, hits (sized once, at the bout's start)
     double last_contact_error_m = -1.0;         // of the last strike; -1 before any
     bool last_hit = false;
