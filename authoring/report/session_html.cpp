@@ -4,6 +4,7 @@
 
 #include "session_figures.h"
 #include "session_motion.h"
+#include "session_responses.h"
 #include "svg_plot.h"
 
 #include <algorithm>
@@ -177,6 +178,7 @@ std::string fighter_section(const SessionLog& log, int index, const FighterLog& 
             count_row("tracker losses", c.losses, "n-losses") + row("time without the head", fixed(c.lost_s, 1) + " s") +
             count_row("joint-limit violations", fighter.joint_limit_violations, "n-violations") + "</table></div>";
     html += "<h3>Timeline</h3>" + timeline_svg(fighter, duration_s);
+    html += responses_section_html(fighter);
     std::vector<double> latency_s, speed_mps, overshoot_m, prediction_m;
     for (const OrderEnd& end : fighter.order_ends) {
         if (end.how == OrderEnd::How::performed && end.waited_s >= 0.0) latency_s.push_back(end.waited_s);

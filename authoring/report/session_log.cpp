@@ -101,7 +101,7 @@ bool SessionLog::add(const nlohmann::json& line) {
     }
     static const char* const k_fighter_types[] = {"order", "order_queued", "order_performed", "order_expired", "ignored_order", "strike",
                                                   "strike_end", "user_strike", "user_strike_end", "character", "tracker_lost",
-                                                  "tracker_back", "fighter_position", "state", "hit_reaction", "user_strike_course"};
+                                                  "tracker_back", "fighter_position", "state", "hit_reaction", "user_strike_course", "user_response"};
     if (std::none_of(std::begin(k_fighter_types), std::end(k_fighter_types), [&](const char* known) { return type == known; })) {
         ++unknown_lines;
         return true;
@@ -133,6 +133,19 @@ bool SessionLog::add(const nlohmann::json& line) {
         strike.target = point(line, "target", *t);
         strike.aimed_point_at_contact = point(line, "aimed_point_at_contact", *t);
         log.strikes.push_back(std::move(strike));
+    } else if (type == "user_response") {
+        ResponseRecord response;
+        response.t_s = *t;
+        response.contact_s = number_or(line, "contact_s", -1.0);
+        response.attack = text(line, "command") + " " + text(line, "kind");
+        response.result = text(line, "result");
+        response.response = text(line, "response");
+        response.quality = text(line, "quality");
+        response.moved = flag(line, "moved", false);
+        response.response_time_s = number_or(line, "response_time_s", -1e9);
+        response.countered = flag(line, "countered", false);
+        response.counter_landed = flag(line, "counter_landed", false);
+        log.responses.push_back(std::move(response));
     } else if (type == "strike_end") {
         if (!log.strikes.empty() && log.strikes.back().overshoot_m < 0.0) {
             StrikeRecord& strike = log.strikes.back();

@@ -59,6 +59,18 @@ struct UserStrikeRecord {
     double approach_s = -1.0;
 };
 
+// How the user answered one of the fighter's blows (a user_response line).
+struct ResponseRecord {
+    double t_s = 0.0, contact_s = -1.0;
+    std::string attack;   // "punch straight", "kick front", ...
+    std::string result;   // the blow: hit, blocked, miss
+    std::string response; // block, parry, slip, duck, step_back, none
+    std::string quality;  // in_time, late, none
+    bool moved = false;
+    double response_time_s = -1e9; // from the blow's visible start (negative: moved before it); -1e9: none
+    bool countered = false, counter_landed = false;
+};
+
 struct TrackerLoss {
     double lost_s = 0.0, back_s = -1.0; // -1: still lost when the events ended
 };
@@ -73,6 +85,7 @@ struct FighterLog {
     std::vector<OrderEnd> order_ends;
     std::vector<StrikeRecord> strikes;
     std::vector<UserStrikeRecord> user_strikes;
+    std::vector<ResponseRecord> responses;
     std::vector<CharacterSwitch> characters;
     std::vector<TrackerLoss> tracker_losses;
     std::vector<RoomPoint> positions; // where the fighter stood (on the floor), when it moved

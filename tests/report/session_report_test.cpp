@@ -220,3 +220,29 @@ TEST_CASE("report: strikes the user's guard blocked are counted and named", "[re
     // Without such strikes the row is not there.
     CHECK(kumite::report::session_html(log_of_text(text_of(bout_lines(4))), nullptr).find("n-blocked-by-user") == std::string::npos);
 }
+
+TEST_CASE("report: the user's answers are tabled by attack, with a histogram of response times for each", "[report]") {
+    std::vector<nlohmann::json> lines = bout_lines(4);
+    auto response = [](double t, const char* command, const char* result, const char* kind, const char* quality, double time_s, bool countered) {
+        nlohmann::json line = {{"t", t}, {"type", "user_response"}, {"fighter", 0}, {"command", command}, {"kind", "straight"}, {"result", result},
+                               {"response", kind}, {"quality", quality}, {"moved", time_s > -1.0}, {"contact_s", t - 1.6}, {"countered", countered}};
+        line["response_time_s"] = time_s > -1.0 ? nlohmann::json(time_s) : nlohmann::json(nullptr);
+        if (countered) line["counter_landed"] = true;
+        return line;
+    };
+    lines.push_back(response(3.0, "punch", "miss", "slip", "in_time", 0.20, true));
+    lines.push_back(response(5.0, "punch", "hit", "block", "late", 0.30, false));
+    lines.push_back(response(7.0, "punch", "blocked", "block", "in_time", -2.0, false)); // a guard held: no move
+    lines.push_back(response(9.0, "kick", "miss", "step_back", "in_time", -0.05, false)); // moved before it showed
+    const std::string html = kumite::report::session_html(log_of_text(text_of(lines)), nullptr);
+    CHECK(occurrences(html, "<tr class=\"attack\">") == 2);
+    CHECK(html.find("<th>punch straight</th><td class=\"n blows\">3</td>") != std::string::npos);
+    CHECK(html.find("<td class=\"n answered\">2 <span class=\"share\">(67%)</span>") != std::string::npos);
+    CHECK(html.find("<td class=\"n median\">0.30 s</td>") != std::string::npos); // of 0.20 and 0.30: the upper middle, as the other figures
+    CHECK(html.find("<td class=\"n kind-block\">2 <span") != std::string::npos);
+    CHECK(html.find("<td class=\"n countered\">1 (1)</td>") != std::string::npos);
+    CHECK(occurrences(html, "class=\"histogram response-time\"") == 2);
+    CHECK(html.find("(1 moved before it showed)") != std::string::npos);
+    // Events from before the answers were measured: no section.
+    CHECK(kumite::report::session_html(log_of_text(text_of(bout_lines(4))), nullptr).find("class=\"responses\"") == std::string::npos);
+}
