@@ -242,7 +242,7 @@ TEST_CASE("report: the user's answers are tabled by attack, with a histogram of 
     CHECK(html.find("<td class=\"n kind-block\">2 <span") != std::string::npos);
     CHECK(html.find("<td class=\"n countered\">1 (1)</td>") != std::string::npos);
     CHECK(occurrences(html, "class=\"histogram response-time\"") == 2);
-    CHECK(html.find("(1 moved before it showed)") != std::string::npos);
+    CHECK(html.find("<th>kick straight</th><td class=\"n blows\">1</td><td class=\"n landed\">0</td><td class=\"n answered\">1 <span class=\"share\">(100%)</span></td><td class=\"n anticipated\">1</td>") != std::string::npos);
     // Events from before the answers were measured: no section.
     CHECK(kumite::report::session_html(log_of_text(text_of(bout_lines(4))), nullptr).find("class=\"responses\"") == std::string::npos);
 }
