@@ -4,6 +4,7 @@
 
 #include "capture_loading.h"
 #include "partial_file.h"
+#include "play_difficulty.h"
 #include "play_motion.h"
 #include "play_output.h"
 #include "play_settings.h"
@@ -58,6 +59,8 @@ const CommandSpec& play_spec() {
          {"seed", "N", "seed of the simulated user (default 1)"},
          {"aim", "latched|predicted", "the setting aim: strike where the head was at the order (default) or where it will be"},
          {"no-defence", "", "the setting defence.enabled = false: the fighter neither blocks nor slips"},
+         {"difficulty", "LEVEL", "beginner, intermediate, person, expert or faster-than-a-person (default): the fighter's reaction\n"
+                                 "time and how often it defends (docs/room.md); applied first"},
          {"settings", "FILE", "fighter settings, 'name = value' per line (applied before --aim, --no-defence and --set)"},
          {"set", "NAME=VALUE", "one fighter setting, e.g. --set human_speed=true (repeatable; applied last, in order)", true},
          {"print-settings", "", "print every setting with its value and meaning, in the form --settings reads, and exit"},
@@ -77,8 +80,12 @@ const CommandSpec& play_spec() {
 
 namespace {
 
-// The fighters' settings: the defaults, then --settings FILE, then --aim and --no-defence, then every --set in order.
+// The fighters' settings: the defaults, then --difficulty, then --settings FILE, then --aim and --no-defence, then
+// every --set in order.
 std::optional<int> read_play_settings(const Arguments& arguments, BoutOptions& options) {
+    if (const std::optional<std::string> level = arguments.value("difficulty")) {
+        if (Result<void> applied = apply_difficulty(options, *level); !applied) return usage_error(play_spec(), applied.error().message);
+    }
     if (const std::optional<std::string> file = arguments.value("settings")) {
         if (Result<void> read = play_settings_read(*file, options); !read) return input_error(read.error().message);
     }
@@ -285,6 +292,7 @@ int run_play(int argc, char** argv) {
     if (const std::optional<nlohmann::json> source = tracker_source_json(bout)) report["tracker_source"] = *source;
     report["motion"] = motion;
     report["settings"] = play_settings_json(options);
+    report["difficulty"] = difficulty_of(options);
     report["realtime"] = realtime;
     report["viewer"] = viewer;
     if (xr) report["xr"] = xr_report;

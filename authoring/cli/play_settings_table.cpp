@@ -93,6 +93,10 @@ const auto k_settings = std::to_array<Setting>({
 
     KUMITE_SETTING(fighter.defence.enabled, k_defence, 0, 0, "",
                    "the fighter blocks and slips the user's strikes (also --no-defence, the command 'defence on|off', the viewer's D key)"),
+    KUMITE_SETTING(fighter.defence.reaction_delay_s, k_defence, 0, 2, "s",
+                   "the fighter's reaction time: a move begins this long after the blow is seen (0: at once, faster than a person, "
+                   "who needs 0.15-0.25 s; --difficulty sets it)"),
+    KUMITE_SETTING(fighter.defence.defend_share, k_defence, 0, 1, "", "the share of the blows seen that the fighter defends at all (--difficulty sets it)"),
     KUMITE_SETTING(fighter.defence.horizon_s, k_defence, 0, 5, "s", "a hand arriving within this long is a threat"),
     KUMITE_SETTING(fighter.defence.min_speed_mps, k_defence, 0, 50, "m/s", "slower hands are not strikes"),
     KUMITE_SETTING(fighter.defence.threat_radius_m, k_defence, 0, 2, "m", "a threat's course passes at most this far from the head or chest"),

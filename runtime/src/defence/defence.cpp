@@ -95,6 +95,7 @@ void Defence::end_strike(double t_s, Hand& hand, UserStrikeOutcome outcome) {
         hand.watch_receding_frames = 0;
     }
     hand.striking = false;
+    hand.move_due_s = -1.0;
     hand.armed = false;
     // A hand that met the fighter or a forearm stays on it a moment: not a new strike until it has left.
     hand.touching = outcome == UserStrikeOutcome::blocked || outcome == UserStrikeOutcome::hit_by_user;
@@ -148,6 +149,7 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
 
         if (hand.striking) {
             hand.peak_speed_mps = std::max(hand.peak_speed_mps, hand.velocity.norm());
+            if (hand.move_due_s >= 0.0 && t_s >= hand.move_due_s) start_due_move(t_s, hand, body, allowed);
             // Its path this frame against the blocking forearm, the head and the chest.
             const bool blocking = is_block(m_move) && m_move_hand == side;
             if (blocking && hand.velocity.norm() >= m_settings.reaim_min_speed_mps) {
@@ -259,6 +261,7 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
         // Before this hand counts as striking again: the block of its own last blow may be the one handed over (a
         // double jab).
         const bool free_to_move = m_move == DefenceMove::none || block_is_over();
+        const bool defended = defends_next();
         hand.striking = true;
         hand.closest_forearm_m = 1e9;
         hand.receding_frames = 0;
@@ -269,7 +272,9 @@ void Defence::update(double t_s, const UserHands& hands, const DefenderBody& bod
         hand.strike.time_to_impact_s = best_time;
         hand.strike.hand_speed_mps = speed;
         hand.peak_speed_mps = speed;
-        if (m_settings.enabled && allowed.any() && free_to_move) start_move(t_s, hand, body, best_time, allowed);
+        hand.strike.defended = defended;
+        if (m_settings.enabled && defended && m_settings.reaction_delay_s > 0.0) hand.move_due_s = t_s + m_settings.reaction_delay_s;
+        else if (m_settings.enabled && defended && allowed.any() && free_to_move) start_move(t_s, hand, body, best_time, allowed);
         push(hand.strike);
     }
 }

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <cmath>
 
 namespace kumite {
 
@@ -42,6 +43,24 @@ bool Defence::block_plan(const Hand& hand, const DefenderBody& body, double time
 
 bool Defence::block_is_over() const {
     return m_settings.hand_over_blocks && is_block(m_move) && m_move_hand >= 0 && !m_hands[m_move_hand].striking;
+}
+
+bool Defence::defends_next() {
+    ++m_threats;
+    if (m_settings.defend_share >= 1.0) return true;
+    const double spread = double(m_threats) * 0.6180339887498949;
+    return spread - std::floor(spread) < m_settings.defend_share;
+}
+
+void Defence::start_due_move(double t_s, Hand& hand, const DefenderBody& body, const Allowed& allowed) {
+    hand.move_due_s = -1.0;
+    if (!allowed.any() || !(m_move == DefenceMove::none || block_is_over())) return;
+    // The time it has left: its course now, to the part it was aimed at.
+    const double speed = hand.velocity.norm();
+    if (speed < 1e-6) return;
+    const Eigen::Vector3d to_part = (hand.strike.at_head ? body.head : body.chest) - hand.position;
+    const double arrival = to_part.dot(hand.velocity) / (speed * speed);
+    if (arrival > 0.0) start_move(t_s, hand, body, arrival, allowed);
 }
 
 void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, double time_to_impact, const Allowed& allowed) {
@@ -86,6 +105,7 @@ void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, doubl
     m_move_hand = static_cast<int>(&hand - m_hands.data());
     hand.strike.move = m_move;
     hand.strike.arm = m_arm;
+    hand.strike.moved_s = t_s;
 }
 
 void Defence::use_block_clip(int clip, double clip_arm_speed_mps, double ramp_s, double before_m) {

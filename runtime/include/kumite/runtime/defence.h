@@ -79,6 +79,12 @@ struct DefenceSettings {
     // the hip and 35 of 72 blows that landed came during the fighter's own strikes, seen 0-0.1 s before). A blow
     // whose path meets that forearm is blocked. Off: the strike's clip moves them as captured.
     bool keep_guard = true;
+    // A person's defence is not instant: the move begins this long after the blow is seen (0: at once, faster than
+    // a person, who needs 0.15-0.25 s from a visible cue), when the blow is still coming; the time it then has left
+    // is what the move gets.
+    double reaction_delay_s = 0.0;
+    // The share of the blows seen that the fighter defends at all (1: every one), spread evenly over the bout.
+    double defend_share = 1.0;
 };
 
 // The fighter's body as the defence sees it (world metres, last frame): arms [left, right].
@@ -119,6 +125,8 @@ struct UserStrikeEvent {
     // the path has been followed (`course_followed`: not `ended`, the outcome `blocked`, the time then).
     double unblocked_clearance_m = 1e9;
     bool course_followed = false;
+    double moved_s = -1.0;           // when the fighter's move for it began (-1: none; reaction_delay_s after it was seen)
+    bool defended = true;            // chosen to be defended (defend_share)
     // Ended: the fastest the hand moved from being seen to its end (unseen: at its arrival), m/s.
     double peak_speed_mps = 0.0;
     // Ended, blocked or hit_by_user: how long the hand had been closing on what it met (the head or the chest, at
@@ -194,11 +202,16 @@ private:
         // Since when the hand has been closing on the head [0] and the chest [1] (UserStrikeEvent::approach_s); < 0: not.
         std::array<double, 2> closing_since_s{-1.0, -1.0};
         double peak_speed_mps = 0.0; // of the strike under way
+        double move_due_s = -1.0;    // reaction_delay_s: when the move for this strike begins (-1: none waiting)
         // A blocked strike whose path is followed on (unblocked_clearance_m) before its end is told.
         bool watching = false;
         UserStrikeEvent watched;
         int watch_receding_frames = 0;
     };
+    // Whether the next blow seen is defended (defend_share, spread evenly: a golden-ratio sequence).
+    bool defends_next();
+    // A move waiting for the reaction delay, begun when it is due and the blow still comes.
+    void start_due_move(double t_s, Hand& hand, const DefenderBody& body, const Allowed& allowed);
     // The forearm (0 left, 1 right) the hand's path from `before` to `now` meets, or -1.
     int forearm_met(const Eigen::Vector3d& before, const Eigen::Vector3d& now, const DefenderBody& body) const;
     // How far outside the head's [0] and the chest's [1] hit radius the segment passes; <= 0: it meets that part.
@@ -250,6 +263,7 @@ private:
     Eigen::Vector3d m_wrist_target = Eigen::Vector3d::Zero(), m_slip_offset = Eigen::Vector3d::Zero();
     std::array<UserStrikeEvent, 8> m_events;
     int m_event_count = 0;
+    long long m_threats = 0; // blows seen: which of them are defended (defend_share)
 };
 
 } // namespace kumite
