@@ -167,6 +167,8 @@ nlohmann::json play_report_json(const Bout& bout) {
               {"synthesized", counters.blocks - counters.block_clips}, {"slips", counters.slips}, {"blocked", counters.blocked},
               {"slipped", counters.slipped}, {"slipped_on_course", counters.slipped_on_course}, {"blocked_on_course", counters.blocked_on_course}, {"hit_by_user", counters.hit_by_user},
               {"missed", counters.user_missed},
+              {"not_defended", counters.not_defended},
+              {"move_after_seen_s", quantiles_of(counters.defence_move_after_seen_s)},
               {"forearm_to_path_m", quantiles_of(counters.forearm_to_path_m)},
               {"arm_speed_mps",
                {{"block_clip", quantiles_of(counters.block_clip_arm_speed_mps)}, {"synthesized", quantiles_of(counters.synthesized_arm_speed_mps)}}},

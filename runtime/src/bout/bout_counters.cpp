@@ -69,6 +69,8 @@ void BoutCounters::tally(const FighterEvent& event, long long frame, const Motio
         ++user_outcomes_by_target[event.user_strike.at_head ? 0 : 1][static_cast<int>(event.user_strike.outcome)];
         ++user_outcomes_by_fighter_state[static_cast<std::size_t>(fighter.state)][static_cast<int>(event.user_strike.outcome)];
         if (event.user_strike.forearm_to_path_m >= 0.0) forearm_to_path_m.add(event.user_strike.forearm_to_path_m);
+        if (event.user_strike.move_after_seen_s >= 0.0) defence_move_after_seen_s.add(event.user_strike.move_after_seen_s);
+        not_defended += event.user_strike.detected && !event.user_strike.defended;
         if (const UserStrikeEvent& block = event.user_strike; block.arm_speed_mps >= 0.0) {
             if (block.move == DefenceMove::synthesized) synthesized_arm_speed_mps.add(block.arm_speed_mps);
             if (block.move == DefenceMove::block_clip) {

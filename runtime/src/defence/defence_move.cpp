@@ -106,6 +106,7 @@ void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, doubl
     hand.strike.move = m_move;
     hand.strike.arm = m_arm;
     hand.strike.moved_s = t_s;
+    hand.strike.move_after_seen_s = t_s - hand.strike.t_s;
 }
 
 void Defence::use_block_clip(int clip, double clip_arm_speed_mps, double ramp_s, double before_m) {

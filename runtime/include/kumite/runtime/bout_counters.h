@@ -48,6 +48,9 @@ struct BoutCounters {
     // reaction): where the blows that land get through (its own strikes and hit reactions, mostly).
     std::array<std::array<long long, 4>, k_fighter_state_count> user_outcomes_by_fighter_state{};
     ValueHistogram forearm_to_path_m{1e-4, 10.0};
+    // Per blow the fighter moved against: from seeing it to the move's first frame (defence.reaction_delay_s, or 0).
+    ValueHistogram defence_move_after_seen_s{1e-3, 10.0};
+    long long not_defended = 0; // blows seen that defence.defend_share left undefended
     // Per block, the fastest the blocking wrist or elbow moved relative to the shoulder while the fist came: captured
     // and synthesized blocks, and a captured one's against the same move in its clip (no pop: at most 1).
     ValueHistogram block_clip_arm_speed_mps{1e-3, 1e3}, synthesized_arm_speed_mps{1e-3, 1e3}, block_clip_speed_ratio{1e-3, 1e3};

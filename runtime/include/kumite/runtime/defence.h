@@ -126,6 +126,7 @@ struct UserStrikeEvent {
     double unblocked_clearance_m = 1e9;
     bool course_followed = false;
     double moved_s = -1.0;           // when the fighter's move for it began (-1: none; reaction_delay_s after it was seen)
+    double move_after_seen_s = -1.0; // ... how long after it was seen (-1: none)
     bool defended = true;            // chosen to be defended (defend_share)
     // Ended: the fastest the hand moved from being seen to its end (unseen: at its arrival), m/s.
     double peak_speed_mps = 0.0;
