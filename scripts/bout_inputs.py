@@ -1,7 +1,20 @@
 """What the checks of a bout against a user give `kumite play`: a database (baked from annotations when given
-those), and the supervisor's orders, a punch or kick every 2 s."""
+those), and the supervisor's orders, a punch or kick every 2 s; and the arguments they take."""
+import argparse
 import os
 import subprocess
+
+
+def parser(doc, duration):
+    """The arguments every check of bouts takes: KUMITE DB MOCAP_ROOT, --characters, --duration, --json."""
+    parser = argparse.ArgumentParser(description=doc.split("\n\n")[0])
+    parser.add_argument("kumite")
+    parser.add_argument("database")
+    parser.add_argument("mocap")
+    parser.add_argument("--characters", default="brawler,kid,giant")
+    parser.add_argument("--duration", type=float, default=duration)
+    parser.add_argument("--json")
+    return parser
 
 
 def database(kumite, given, mocap, work):

@@ -12,7 +12,6 @@ time and the kinds, reported.
 
 --min-share X fails when either share (time within 0.03 s, kind right) is under X.
 """
-import argparse
 import collections
 import concurrent.futures
 import json
@@ -40,14 +39,8 @@ def bout(job):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("kumite")
-    parser.add_argument("database")
-    parser.add_argument("mocap")
-    parser.add_argument("--characters", default="brawler,kid,giant")
-    parser.add_argument("--duration", type=float, default=30.0)
+    parser = bout_inputs.parser(__doc__, 30.0)
     parser.add_argument("--set", action="append", default=[], dest="settings")
-    parser.add_argument("--json")
     parser.add_argument("--min-share", type=float, default=0.0)
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as work:

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 #include <string_view>
 
 namespace kumite {
@@ -161,14 +162,43 @@ void Strike::play(double t_s, CharacterBody& body, const TrackedUser& user) {
     m_over = index >= adapter.frame_count() - 1;
 }
 
-Eigen::Vector3d Strike::striking_point(const CharacterBody& body) const {
-    const BodyPart part = static_cast<BodyPart>(segment());
-    const LimbChain& limb = body.anatomy().limbs[limb_of_segment(part)];
-    const Eigen::Vector3d middle = body.positions()[std::size_t(limb.middle)];
+namespace {
+
+// The striking part's centre in `positions` (world): the fist or foot `knuckles_m` past the wrist or ankle along the
+// lower bone, or the elbow or knee itself.
+Eigen::Vector3d striking_point_in(std::span<const Eigen::Vector3d> positions, const RestAnatomy& anatomy, int segment, double knuckles_m) {
+    const BodyPart part = static_cast<BodyPart>(segment);
+    const LimbChain& limb = anatomy.limbs[limb_of_segment(part)];
+    const Eigen::Vector3d middle = positions[std::size_t(limb.middle)];
     if (segment_strikes_with_middle(part)) return middle;
-    const Eigen::Vector3d extremity = body.positions()[std::size_t(limb.extremity)];
+    const Eigen::Vector3d extremity = positions[std::size_t(limb.extremity)];
     const Eigen::Vector3d along = extremity - middle;
-    return along.norm() > 1e-6 ? Eigen::Vector3d(extremity + m_settings.user_guard.knuckles_past_wrist_m * along.normalized()) : extremity;
+    return along.norm() > 1e-6 ? Eigen::Vector3d(extremity + knuckles_m * along.normalized()) : extremity;
+}
+
+} // namespace
+
+Eigen::Vector3d Strike::striking_point(const CharacterBody& body) const {
+    return striking_point_in(body.positions(), body.anatomy(), segment(), m_settings.user_guard.knuckles_past_wrist_m);
+}
+
+bool Strike::guard_in_the_way(CharacterBody& body, const UserGuard& guard) {
+    // The planned strike played to its contact against the guard as it is now, half a database frame at a time (a
+    // kick's arc, cut by chords a frame long, passes under a glove it meets).
+    StrikeAdapter& adapter = body.current().adapter;
+    if (segment() < 0) return false;
+    Eigen::Vector3d previous = Eigen::Vector3d::Zero();
+    for (int step = 0; step <= 2 * adapter.contact_index(); ++step) {
+        const double index = 0.5 * step;
+        adapter.step(index, body.pose());
+        const Eigen::Vector3d point = striking_point_in(adapter.positions(), body.anatomy(), segment(), m_settings.user_guard.knuckles_past_wrist_m);
+        if (step > 0) {
+            const GuardPart met = guard.first_contact(previous, point, m_settings.user_guard.striking_radius_m).part;
+            if (met != GuardPart::none) return guard_part_blocks(met);
+        }
+        previous = point;
+    }
+    return false;
 }
 
 bool Strike::meet_guard(double index, CharacterBody& body, const TrackedUser& user) {

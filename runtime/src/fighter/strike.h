@@ -70,6 +70,9 @@ public:
     // The striking part's centre as shown (world): the fist or foot past the wrist or ankle along the lower bone, or
     // the elbow or knee itself.
     Eigen::Vector3d striking_point(const CharacterBody& body) const;
+    // Whether the strike last planned, played to its contact against the user's guard as it is now, meets a glove or
+    // forearm before the head or trunk (the adapter's frames into the body's pose: call it while planning).
+    bool guard_in_the_way(CharacterBody& body, const UserGuard& guard);
 
 private:
     void begin(CharacterBody& body); // the body's adapter on m_plan, from m_start_frame

@@ -26,8 +26,11 @@ StrikePlanner::Outcome StrikePlanner::plan(double t_s, FighterAim aim, bool appr
     query.kind = pending.order.kind;
     query.height = pending.order.height;
     query.character = rig.size();
-    // The head, else the highest point of the body a strike reaches.
-    const int parts = m_reach_fallback ? k_target_part_count : 1;
+    // The head, else the highest point of the body a strike reaches; against a guard, the highest it leaves open.
+    const UserGuard& guard = user.guard();
+    const bool openings = guard.settings().enabled && guard.settings().aim_at_openings && pending.order.height == StrikeHeight::none &&
+                          user.tracking() && (user.hands().present[0] || user.hands().present[1]);
+    const int parts = m_reach_fallback || openings ? k_target_part_count : 1;
     // An order may wait a little: for reach (the approach goes on meanwhile), and with predicted aim while the user
     // is changing course (just turned, stopped or started: the extrapolation would be wrong).
     const bool waiting_allowed = t_s - pending.since_s < m_wait_for_reach_s;
@@ -45,13 +48,23 @@ StrikePlanner::Outcome StrikePlanner::plan(double t_s, FighterAim aim, bool appr
     Eigen::Vector3d target = user.head();
     int part = first;
     bool reachable = false;
+    int covered = -1; // the first part reached whose strike the guard would meet first
     for (; part < last; ++part) {
         found = retrieve(query, aim_offset(part, user.head(), body.heading().origin, m_surface_depth_m), aim, pending, user, target);
         if (!found.found) break;
         if (strike.try_plan(found, target, body.mir(), body) <= m_reach_tolerance_m) {
+            if (openings && strike.guard_in_the_way(body, guard)) {
+                if (covered < 0) covered = part;
+                continue;
+            }
             reachable = true;
             break;
         }
+    }
+    if (!reachable && covered >= 0) { // every part it reaches is covered: the first of them, into the guard
+        part = covered;
+        found = retrieve(query, aim_offset(part, user.head(), body.heading().origin, m_surface_depth_m), aim, pending, user, target);
+        reachable = found.found && strike.try_plan(found, target, body.mir(), body) <= m_reach_tolerance_m;
     }
     if (found.found && !reachable && !pending.tried && last < parts) {
         orders.look_next(last); // the first round goes on at the next step

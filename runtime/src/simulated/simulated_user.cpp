@@ -39,13 +39,14 @@ std::optional<SimulatedKind> simulated_kind_from_name(std::string_view name) {
     if (name == "slip") return SimulatedKind::slip;
     if (name == "cover") return SimulatedKind::cover;
     if (name == "step-back") return SimulatedKind::step_back;
+    if (name == "high-guard") return SimulatedKind::high_guard;
     return std::nullopt;
 }
 
 SimulatedUser::SimulatedUser(SimulatedKind kind, std::uint64_t seed, double parameter) : m_kind(kind), m_random{seed} {
     if (kind == SimulatedKind::walk && parameter > 0.0) m_walk_speed_mps = parameter;
     if (answers(kind) && parameter > 0.0) m_answer_delay_s = parameter;
-    if (kind == SimulatedKind::counter || answers(kind)) m_next_punch_s = 1e18; // only in reply, or never
+    if (kind == SimulatedKind::counter || kind == SimulatedKind::high_guard || answers(kind)) m_next_punch_s = 1e18; // only in reply, or never
 }
 
 void SimulatedUser::on_order(double t_s) {
@@ -80,7 +81,8 @@ Eigen::Vector3d SimulatedUser::head(double t_s) {
     case SimulatedKind::still:
     case SimulatedKind::punch:
     case SimulatedKind::counter:
-    case SimulatedKind::cover: return m_last_head = start;
+    case SimulatedKind::cover:
+    case SimulatedKind::high_guard: return m_last_head = start;
     case SimulatedKind::slip:
     case SimulatedKind::step_back: {
         const double amount = answer_amount(t_s - m_answer_start_s, 0.15);
@@ -123,6 +125,13 @@ UserHands SimulatedUser::hands(double t_s) {
         if (amount <= 0.0) return out;
         if (m_cover_side < 0) choose_cover(out);
         out.world[m_cover_side] += amount * (m_cover_point - out.world[m_cover_side]);
+        return out;
+    }
+    if (m_kind == SimulatedKind::high_guard) {
+        UserHands out = m_hands.hands(t_s, m_last_head);
+        const Eigen::Vector3d left = (out.world[0] - out.world[1]).normalized();
+        const Eigen::Vector3d forward = Eigen::Vector3d::UnitY().cross(left);
+        for (int side = 0; side < 2; ++side) out.world[side] = m_last_head + 0.10 * forward - 0.05 * Eigen::Vector3d::UnitY() + (side == 0 ? 0.09 : -0.09) * left;
         return out;
     }
     if (answers(m_kind)) return m_hands.hands(t_s, m_last_head);

@@ -32,7 +32,7 @@ Result<std::unique_ptr<HeadTracker>> HeadTracker::open(std::string_view spec_vie
             if (!read) return read.error();
             tracker->m_scripted = std::move(*read);
         } else {
-            return make_error(ErrorCode::invalid, "--tracker simulate: takes still, wander, walk[:SPEED], dodge, dodge-seen, punch, counter, slip[:DELAY], cover[:DELAY], step-back[:DELAY] or a user script file, not '" + name + "'");
+            return make_error(ErrorCode::invalid, "--tracker simulate: takes still, wander, walk[:SPEED], dodge, dodge-seen, punch, counter, slip[:DELAY], cover[:DELAY], step-back[:DELAY], high-guard or a user script file, not '" + name + "'");
         }
     } else if (spec.starts_with("dtrack:")) {
         int port = 0, body = config.head_body, left = -1, right = -1;
@@ -59,7 +59,7 @@ Result<std::unique_ptr<HeadTracker>> HeadTracker::open(std::string_view spec_vie
         if (!read) return read.error();
         tracker->m_capture = std::move(*read);
     } else {
-        return make_error(ErrorCode::invalid, "--tracker must be dtrack:PORT[:HEAD[,LEFT,RIGHT]], replay:FILE, capture:FILE.bvh[:DISTANCE[:START_S]] or simulate:still|wander|walk[:SPEED]|dodge|dodge-seen|punch|counter|slip|cover|step-back[:DELAY]|FILE, not '" + spec + "'");
+        return make_error(ErrorCode::invalid, "--tracker must be dtrack:PORT[:HEAD[,LEFT,RIGHT]], replay:FILE, capture:FILE.bvh[:DISTANCE[:START_S]] or simulate:still|wander|walk[:SPEED]|dodge|dodge-seen|punch|counter|slip|cover|step-back[:DELAY]|high-guard|FILE, not '" + spec + "'");
     }
     return tracker;
 }

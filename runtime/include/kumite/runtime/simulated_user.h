@@ -17,7 +17,9 @@
 //            aside (left and right in turn), `cover` raises both gloves in front of the face, `step-back` moves the
 //            head 0.35 m back, away from the fighter; out over 0.15 s (the gloves 0.1 s), held 0.75 s, back over
 //            0.2 s. Each answer begins at a frame (the strike's start plus DELAY) that answer_starts() tells.
-// Only `punch`, `counter` and the answering users have tracked hands.
+//   high-guard — like still, both gloves held tight at the cheeks (10 cm in front of the head, 5 cm under its centre,
+//            9 cm to each side), forearms down in front of the chest: a boxer who covers up.
+// Only `punch`, `counter`, `high-guard` and the answering users have tracked hands.
 
 #include <Eigen/Core>
 
@@ -34,7 +36,7 @@
 
 namespace kumite {
 
-enum class SimulatedKind { still, wander, walk, dodge, dodge_seen, punch, counter, slip, cover, step_back };
+enum class SimulatedKind { still, wander, walk, dodge, dodge_seen, punch, counter, slip, cover, step_back, high_guard };
 std::optional<SimulatedKind> simulated_kind_from_name(std::string_view name);
 
 class SimulatedUser {

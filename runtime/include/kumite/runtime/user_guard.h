@@ -26,6 +26,8 @@ struct UserGuardSettings {
     double trunk_radius_m = 0.15;
     double striking_radius_m = 0.05;   // the fighter's fist, foot, knee or elbow
     double knuckles_past_wrist_m = k_fist_centre_past_wrist_m; // the fist's centre, along the forearm past the wrist
+    bool aim_at_openings = true;       // an order that leaves the height open aims at the highest part (head, chin, chest,
+                                       // solar plexus) whose strike the guard as it is would not meet first
 };
 
 enum class GuardPart { none, head, trunk, glove_l, glove_r, forearm_l, forearm_r };
