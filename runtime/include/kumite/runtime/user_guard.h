@@ -18,7 +18,7 @@ namespace kumite {
 constexpr double k_fist_centre_past_wrist_m = 0.08;
 
 struct UserGuardSettings {
-    bool enabled = false;              // the user's gloves and forearms stop the fighter's strikes that meet them first
+    bool enabled = true;               // the user's gloves and forearms stop the fighter's strikes that meet them first
                                        // (off: the head alone decides, at the contact)
     double glove_radius_m = 0.10;      // a boxing glove around the tracked hand point
     double forearm_radius_m = 0.05;
