@@ -145,7 +145,7 @@ const auto k_settings = std::to_array<Setting>({
                    "blocked (false: the head alone decides, at the contact)"),
     KUMITE_SETTING(fighter.user_guard.aim_at_openings, k_guard, 0, 0, "",
                    "an order that leaves the height open aims at the highest part (head, chin, chest, solar plexus) whose strike the "
-                   "guard as it is would not meet first (with user_guard.enabled)"),
+                   "guard as it is would not meet first (with user_guard.enabled; it lands more and is hit more: docs/design.md)"),
     KUMITE_SETTING(fighter.user_guard.glove_radius_m, k_guard, 0, 0.5, "m", "a glove: a sphere this big around the tracked hand point"),
     KUMITE_SETTING(fighter.user_guard.forearm_radius_m, k_guard, 0, 0.5, "m", "a forearm: a capsule this thick from the wrist back to the elbow"),
     KUMITE_SETTING(fighter.user_guard.head_radius_m, k_guard, 0, 0.5, "m", "the user's head: a sphere this big around the tracked head"),

@@ -26,8 +26,9 @@ struct UserGuardSettings {
     double trunk_radius_m = 0.15;
     double striking_radius_m = 0.05;   // the fighter's fist, foot, knee or elbow
     double knuckles_past_wrist_m = k_fist_centre_past_wrist_m; // the fist's centre, along the forearm past the wrist
-    bool aim_at_openings = true;       // an order that leaves the height open aims at the highest part (head, chin, chest,
-                                       // solar plexus) whose strike the guard as it is would not meet first
+    bool aim_at_openings = false;      // an order that leaves the height open aims at the highest part (head, chin, chest,
+                                       // solar plexus) whose strike the guard as it is would not meet first (off: the
+                                       // fighter lands more, and is hit more: docs/design.md, "The user's guard")
 };
 
 enum class GuardPart { none, head, trunk, glove_l, glove_r, forearm_l, forearm_r };
