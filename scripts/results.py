@@ -385,7 +385,8 @@ def strikes_section(rates, opponents, bout):
               "bouts against simulated users (`scripts/hit_rates.py`; `walk:V` walks at V m/s, `dodge` moves 0.25 s after each "
               "order, `dodge-seen` 0.25 s after the strike begins), and the recorded people's captures, each bout as long as "
               f"its capture up to {opponents['max_seconds']:g} s (`scripts/real_opponents.py`). Characters: "
-              f"{', '.join(characters)}.", "",
+              f"{', '.join(characters)}. The recorded people's gloves and forearms block the strikes whose path meets them "
+              "first (the user's guard; the simulated users have no hands in the way).", "",
               table(["against", "hits / strikes", "95% interval", "order to contact, median / p90 (s)"], rows), ""]
     blows = opponents["blow_speeds"]
     rows = []
