@@ -27,6 +27,8 @@ import sys
 import tempfile
 import time
 
+import bout_inputs
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
@@ -308,19 +310,12 @@ def load_json(name, path):
         raise Failure(f"{name}: cannot read its report {path}: {error}")
 
 
-def order_script(path, seconds):
-    with open(path, "w") as out:
-        t, n = 1.0, 0
-        while t < seconds - 1.0:
-            out.write(f"{t:.2f} {'punch' if n % 2 == 0 else 'kick'} {'left' if (n // 2) % 2 == 0 else 'right'}\n")
-            t, n = t + 2.0, n + 1
-
 
 def play_bout(ctx):
     """One fighter against the wandering simulated user, an order every 2 s: the frame time kumite play reports."""
     seconds = 10 if ctx.short else 60
     orders, report = os.path.join(ctx.work, "bout.orders"), os.path.join(ctx.work, "bout.json")
-    order_script(orders, seconds)
+    bout_inputs.orders_every_2s(orders, seconds)
     run("kumite play", [ctx.kumite, "play", ctx.db, "--headless", "--duration", str(seconds), "--tracker", "simulate:wander",
                         "--character", "brawler", "--commands", f"script:{orders}", "--seed", "1", "--report", report],
         env=ctx.env, want_json=False)

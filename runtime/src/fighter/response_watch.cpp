@@ -15,13 +15,6 @@ constexpr double k_line_from_target_m = 0.15; // the blow's line from where its 
 constexpr double k_counter_land_s = 0.6; // a counter begun at the window's end has landed or not by this much later
 constexpr double k_longest_blow_s = 4.0; // a strike with no contact by then is let go
 
-Eigen::Vector3d nearest_on_segment(const Eigen::Vector3d& point, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-    const Eigen::Vector3d ab = b - a;
-    const double length2 = ab.squaredNorm();
-    const double u = length2 > 1e-18 ? std::clamp((point - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-    return a + u * ab;
-}
-
 Eigen::Vector3d unit_or_zero(const Eigen::Vector3d& v) { return v.norm() > 1e-9 ? Eigen::Vector3d(v.normalized()) : Eigen::Vector3d::Zero(); }
 
 // From the line through `point` along `way` (unit) to `p`, square to it.

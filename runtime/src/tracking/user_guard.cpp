@@ -33,13 +33,6 @@ double first_within_sphere(const Eigen::Vector3d& from, const Eigen::Vector3d& p
     return share >= 0.0 && share <= 1.0 ? share : 2.0;
 }
 
-Eigen::Vector3d nearest_on_segment(const Eigen::Vector3d& point, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-    const Eigen::Vector3d ab = b - a;
-    const double length2 = ab.squaredNorm();
-    const double u = length2 > 1e-18 ? std::clamp((point - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
-    return a + u * ab;
-}
-
 double distance_to_segment(const Eigen::Vector3d& point, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
     return (point - nearest_on_segment(point, a, b)).norm();
 }
@@ -66,6 +59,13 @@ double first_within_capsule(const Eigen::Vector3d& from, const Eigen::Vector3d& 
 }
 
 } // namespace
+
+Eigen::Vector3d nearest_on_segment(const Eigen::Vector3d& point, const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+    const Eigen::Vector3d ab = b - a;
+    const double length2 = ab.squaredNorm();
+    const double u = length2 > 1e-18 ? std::clamp((point - a).dot(ab) / length2, 0.0, 1.0) : 0.0;
+    return a + u * ab;
+}
 
 const char* guard_part_name(GuardPart part) {
     switch (part) {

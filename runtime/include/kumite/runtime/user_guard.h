@@ -41,6 +41,9 @@ struct GuardContact {
     Eigen::Vector3d sphere_at_touch = Eigen::Vector3d::Zero(); // the moving sphere's centre there
 };
 
+// The point of the segment a-b nearest `point`.
+Eigen::Vector3d nearest_on_segment(const Eigen::Vector3d& point, const Eigen::Vector3d& a, const Eigen::Vector3d& b);
+
 // The user's right on the floor (unit): along the line from the left hand to the right one when both are tracked
 // and it runs within 60 degrees of the facing's right (the shoulders turn with the hands: a boxer's stance), else the
 // facing's right (`facing`: unit, on the floor).
