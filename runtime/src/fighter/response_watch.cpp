@@ -11,6 +11,7 @@ namespace {
 constexpr double k_late_window_s = 0.3;  // an answer begun this long after the contact still counts (late)
 constexpr double k_parry_reach_m = 0.25; // a glove that crosses the blow's line, and goes on past it by between
 constexpr double k_parry_past_m = 0.08;  // these, went across its path (a parry); one that stops on it, a block
+constexpr double k_on_path_m = 0.15;     // a glove this near the blow's line (its 10 cm and a fist's 5 cm) is on its path
 constexpr double k_line_from_target_m = 0.15; // the blow's line from where its part was when still this far out
 constexpr double k_counter_land_s = 0.6; // a counter begun at the window's end has landed or not by this much later
 constexpr double k_longest_blow_s = 4.0; // a strike with no contact by then is let go
@@ -94,16 +95,21 @@ void ResponseWatch::follow(double t_s, double dt_s, Watched& watched, const Blow
             if (closing > m_settings.blow_visible_mps) r.visible_s = t_s;
         }
         if (!watched.have_line || (blow.target - blow.point).norm() > k_line_from_target_m) watched.point = blow.point;
+        else watched.line_final = true;
         watched.target = blow.target;
         watched.have_line = true;
     }
     const bool answering = !r.moved && (r.contact_s < 0.0 || t_s <= r.contact_s + k_late_window_s);
     if (!watched.have_line || !user.tracking()) return;
     const Eigen::Vector3d along = unit_or_zero(watched.target - watched.point); // the blow's way
-    if (watched.glove_side >= 0 && r.moved && !watched.crossed && (r.contact_s < 0.0 || t_s <= r.contact_s)) {
+    // Across the line as the blow arrives (within 15 cm of its target, or its contact): where the glove rose on one
+    // side, where it is now on the other.
+    const bool line_final = watched.line_final || (r.contact_s >= 0.0 && t_s >= r.contact_s);
+    if (watched.glove_side >= 0 && r.moved && !watched.crossed && line_final && (r.contact_s < 0.0 || t_s <= r.contact_s)) {
         if (user.hands().present[watched.glove_side]) {
             const Eigen::Vector3d offset = off_line(user.hands().world[watched.glove_side], watched.point, along);
-            watched.crossed = offset.dot(watched.glove_offset) < 0.0 && offset.norm() >= k_parry_past_m && offset.norm() <= k_parry_reach_m;
+            const Eigen::Vector3d rose = off_line(watched.glove_at_rise, watched.point, along);
+            watched.crossed = offset.dot(rose) < 0.0 && offset.norm() >= k_parry_past_m && offset.norm() <= k_parry_reach_m;
         }
     }
     if (!answering) return;
@@ -118,7 +124,11 @@ void ResponseWatch::follow(double t_s, double dt_s, Watched& watched, const Blow
         if (!present) continue;
         const Eigen::Vector3d& glove = user.hands().world[side];
         const Eigen::Vector3d own = (glove - m_previous_hands.world[side]) / dt_s - head_velocity; // the arm's own motion
-        speed[glove_left + side] = own.dot(unit_or_zero(nearest_on_segment(glove, watched.point, watched.target) - glove));
+        const Eigen::Vector3d to_path = nearest_on_segment(glove, watched.point, watched.target) - glove;
+        speed[glove_left + side] = own.dot(unit_or_zero(to_path));
+        // A glove already on the path (the guard) answers by moving along it too: into the face (a cover) or out to
+        // meet the blow.
+        if (to_path.norm() <= k_on_path_m) speed[glove_left + side] = std::max(speed[glove_left + side], std::abs(own.dot(along)));
     }
     // The first channel over its threshold that was under it since the strike began, held a second frame.
     Channel answered = k_channels;
@@ -137,10 +147,10 @@ void ResponseWatch::follow(double t_s, double dt_s, Watched& watched, const Blow
         }
         if (answered == k_channels || watched.rising_s[c] < watched.rising_s[answered]) answered = Channel(c);
     }
-    if (answered != k_channels) answer(watched, answered, watched.rising_s[answered], user, along);
+    if (answered != k_channels) answer(watched, answered, watched.rising_s[answered], user);
 }
 
-void ResponseWatch::answer(Watched& watched, Channel channel, double rose_s, const TrackedUser& user, const Eigen::Vector3d& along) {
+void ResponseWatch::answer(Watched& watched, Channel channel, double rose_s, const TrackedUser& user) {
     UserResponse& r = watched.response;
     r.moved = true;
     r.response_s = rose_s;
@@ -151,7 +161,7 @@ void ResponseWatch::answer(Watched& watched, Channel channel, double rose_s, con
     case glove_right: {
         r.kind = ResponseKind::block; // a parry once it goes on across the path (follow)
         watched.glove_side = channel == glove_left ? 0 : 1;
-        watched.glove_offset = off_line(user.hands().world[watched.glove_side], watched.point, along);
+        watched.glove_at_rise = user.hands().world[watched.glove_side];
         break;
     }
     case k_channels: break;

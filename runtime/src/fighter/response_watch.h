@@ -38,6 +38,7 @@ private:
         FighterEvent strike;            // the contact's event (once it came): what the blow was and became
         bool have_contact = false;
         bool have_line = false;
+        bool line_final = false;        // the blow came within 15 cm of its target: its line is the way it arrives
         Eigen::Vector3d point = Eigen::Vector3d::Zero(), target = Eigen::Vector3d::Zero(); // the blow's path, last seen
                                                                                            // over 15 cm from its target
         Eigen::Vector3d floor_way = Eigen::Vector3d::Zero(); // from the fighter to the user on the floor when it began
@@ -45,13 +46,13 @@ private:
         std::array<double, k_channels> rising_s{};  // the frame it went over (held one more frame: the answer), or -1
         bool downwards = false;                     // head_off_line: mostly down when it rose
         int glove_side = -1;                        // the glove that answered
-        Eigen::Vector3d glove_offset = Eigen::Vector3d::Zero(); // from the blow's line to that glove when it rose
+        Eigen::Vector3d glove_at_rise = Eigen::Vector3d::Zero(); // that glove when it rose
         bool crossed = false;                       // the glove went on across the line, near it (a parry)
         int counter_hand = -1;                      // the hand of the user's counter
     };
 
     void follow(double t_s, double dt_s, Watched& watched, const Blow& blow, const TrackedUser& user);
-    void answer(Watched& watched, Channel channel, double rose_s, const TrackedUser& user, const Eigen::Vector3d& along);
+    void answer(Watched& watched, Channel channel, double rose_s, const TrackedUser& user);
     void finish(double t_s, Watched& watched, EventLog& log);
 
     ResponseSettings m_settings;

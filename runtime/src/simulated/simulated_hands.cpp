@@ -9,15 +9,16 @@
 
 namespace kumite {
 
-void SimulatedHands::set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest) {
+void SimulatedHands::set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest, bool guarding) {
     m_opponent_head = head;
     m_opponent_chest = chest;
+    if (guarding || !m_has_opponent) m_faced_head = head;
     m_has_opponent = true;
 }
 
 Eigen::Vector3d SimulatedHands::guard(int side, const Eigen::Vector3d& head) const {
     // Facing the opponent on the floor (or -Z, towards a fighter at the origin, before one is known).
-    Eigen::Vector3d forward = m_has_opponent ? Eigen::Vector3d(m_opponent_head - head) : Eigen::Vector3d(0.0, 0.0, -1.0);
+    Eigen::Vector3d forward = m_has_opponent ? Eigen::Vector3d(m_faced_head - head) : Eigen::Vector3d(0.0, 0.0, -1.0);
     forward.y() = 0.0;
     forward = forward.norm() > 1e-6 ? forward.normalized() : Eigen::Vector3d(0.0, 0.0, -1.0);
     const Eigen::Vector3d left = Eigen::Vector3d::UnitY().cross(forward); // the user's left

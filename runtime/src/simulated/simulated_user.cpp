@@ -56,7 +56,7 @@ void SimulatedUser::on_order(double t_s) {
 }
 
 void SimulatedUser::set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest, bool guarding) {
-    m_hands.set_opponent(head, chest);
+    m_hands.set_opponent(head, chest, guarding);
     // The fighter left its guard (a strike began) since it was last seen: a dodge 0.25 s after that.
     if (m_kind == SimulatedKind::dodge_seen && m_opponent_guarding && !guarding) {
         m_dodge_start_s = m_seen_s + k_dodge_delay_s;
@@ -121,9 +121,12 @@ Eigen::Vector3d SimulatedUser::head(double t_s) {
 UserHands SimulatedUser::hands(double t_s) {
     if (m_kind == SimulatedKind::cover) {
         UserHands out = m_hands.hands(t_s, m_last_head);
-        const double amount = answer_amount(t_s - m_answer_start_s, 0.1);
-        if (amount <= 0.0) return out;
+        if (t_s < m_answer_start_s) return out;
         if (m_cover_side < 0) choose_cover(out);
+        // Out over 0.1 s, or at 2 m/s on average when shorter: a short move is quick, not slow to start.
+        const double out_s = std::clamp((m_cover_point - out.world[m_cover_side]).norm() / 2.0, 0.05, 0.1);
+        const double amount = answer_amount(t_s - m_answer_start_s, out_s);
+        if (amount <= 0.0) return out;
         out.world[m_cover_side] += amount * (m_cover_point - out.world[m_cover_side]);
         return out;
     }
@@ -150,19 +153,38 @@ UserHands SimulatedUser::hands(double t_s) {
 }
 
 void SimulatedUser::choose_cover(const UserHands& guard) {
-    // The fighter's hand or foot that moved most since it left its guard: the blow. The glove nearer its way goes
-    // between it and the head, 15 cm out from the head (a high cover: a blow to the body gets through).
+    constexpr double k_foot_off_floor_m = 0.25;
+    // The blow: the fighter's hand or foot (off the floor) that moved most since it left its guard. The glove nearer
+    // goes between it and the nearest point of the user's middle line (the head down to the belly), 20 cm out.
     int blow = 0;
     double most = -1e9;
     for (int limb = 0; limb < 4; ++limb) {
-        const double closing = (m_opponent_limbs[limb] - m_limbs_at_guard_left[limb]).norm();
-        if (closing > most) {
-            most = closing;
+        const bool stepping = limb >= 2 && m_opponent_limbs[limb].y() < k_foot_off_floor_m; // a step, not a kick
+        const double moved = (m_opponent_limbs[limb] - m_limbs_at_guard_left[limb]).norm();
+        if (!stepping && moved > most) {
+            most = moved;
             blow = limb;
         }
     }
-    const Eigen::Vector3d from = m_opponent_limbs[blow] - m_last_head;
-    m_cover_point = m_last_head + 0.15 * (from.norm() > 1e-6 ? Eigen::Vector3d(from.normalized()) : Eigen::Vector3d::UnitZ());
+    const Eigen::Vector3d& limb = m_opponent_limbs[blow];
+    const Eigen::Vector3d motion = limb - m_limbs_at_guard_left[blow];
+    const Eigen::Vector3d way = motion.norm() > 1e-6 ? Eigen::Vector3d(motion.normalized()) : Eigen::Vector3d::Zero();
+    Eigen::Vector3d front = limb - m_last_head; // the body's front: 8 cm from the head towards the blow
+    front.y() = 0.0;
+    front = m_last_head + 0.08 * (front.norm() > 1e-6 ? Eigen::Vector3d(front.normalized()) : Eigen::Vector3d::UnitZ());
+    Eigen::Vector3d target = front;
+    double nearest = 1e9;
+    for (int step = 0; step <= 9; ++step) { // every 5 cm down the front, head to solar plexus
+        const Eigen::Vector3d point = front - 0.05 * step * Eigen::Vector3d::UnitY();
+        const Eigen::Vector3d offset = point - limb;
+        const double off_way = (offset - std::max(0.0, offset.dot(way)) * way).norm();
+        if (off_way < nearest) {
+            nearest = off_way;
+            target = point;
+        }
+    }
+    const Eigen::Vector3d out = limb - target;
+    m_cover_point = target + 0.2 * (out.norm() > 1e-6 ? Eigen::Vector3d(out.normalized()) : Eigen::Vector3d::UnitZ());
     m_cover_side = (guard.world[0] - m_cover_point).norm() <= (guard.world[1] - m_cover_point).norm() ? 0 : 1;
 }
 

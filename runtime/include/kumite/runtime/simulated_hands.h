@@ -3,7 +3,8 @@
 // fighter's head or chest (latched when the punch starts) from `distance` away: the hand draws back from its guard
 // to that distance over 0.25 s (slowly, on the line to the target), thrusts at a steady speed, holds, and returns
 // to the guard. The guard: each hand 0.25 m in front of the head (towards the fighter), 0.22 m below it, 0.17 m to
-// its side.
+// its side, facing the fighter's head as it was when last in its guard (a person does not swivel the guard after the
+// fighter's head as it lunges into a strike).
 
 #include <Eigen/Core>
 
@@ -19,8 +20,8 @@ struct UserHands {
 
 class SimulatedHands {
 public:
-    // Where the fighter's head and chest are (the bout tells it every frame).
-    void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest);
+    // Where the fighter's head and chest are, and whether it is in its guard (the bout tells it every frame).
+    void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest, bool guarding = true);
     // A straight punch of hand `side` (0 left, 1 right) from its guard at the opponent's head (else chest), as they
     // are now, at `speed_mps` along the way; a punch under way is replaced.
     void punch(double t_s, int side, bool at_head, double speed_mps, double distance_m = 0.8);
@@ -37,6 +38,7 @@ private:
 
     bool m_has_opponent = false;
     Eigen::Vector3d m_opponent_head = Eigen::Vector3d::Zero(), m_opponent_chest = Eigen::Vector3d::Zero();
+    Eigen::Vector3d m_faced_head = Eigen::Vector3d::Zero(); // the guard faces it: the fighter's head when last guarding
     struct Punch {
         bool active = false;
         int side = 0;

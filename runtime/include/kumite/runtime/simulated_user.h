@@ -14,8 +14,9 @@
 //            back to its guard, a straight punch as `punch` throws them.
 //   slip, cover, step-back — answer each of the fighter's strikes DELAY s after it leaves its guard (what the room
 //            shows; `simulate:slip:0.15`, default 0.25), with tracked hands in a guard: `slip` moves the head 0.3 m
-//            aside (left and right in turn), `cover` raises both gloves in front of the face, `step-back` moves the
-//            head 0.35 m back, away from the fighter; out over 0.15 s (the gloves 0.1 s), held 0.75 s, back over
+//            aside (left and right in turn), `cover` puts the glove nearer the blow between it and the nearest point of the
+//            user's middle line (head to belly), 20 cm out, `step-back` moves the
+//            head 0.35 m back, away from the fighter; out over 0.15 s (the glove over 0.1 s, or at 2 m/s when shorter), held 0.75 s, back over
 //            0.2 s. Each answer begins at a frame (the strike's start plus DELAY) that answer_starts() tells.
 //   high-guard — like still, both gloves held tight at the cheeks (10 cm in front of the head, 5 cm under its centre,
 //            9 cm to each side), forearms down in front of the chest: a boxer who covers up.
@@ -101,7 +102,7 @@ public:
 
     Eigen::Vector3d head(double t_s); // call with non-decreasing times
     void on_order(double t_s);
-    void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest, bool = true) { m_hands.set_opponent(head, chest); }
+    void set_opponent(const Eigen::Vector3d& head, const Eigen::Vector3d& chest, bool guarding = true) { m_hands.set_opponent(head, chest, guarding); }
     UserHands hands(double t_s); // after head(t)
 
 private:

@@ -8,8 +8,9 @@
 // user's first defensive motion is the first frame over a speed threshold (never earlier) of
 //   - the head moving back along the blow's line (head_mps): a step back or lean back;
 //   - the head leaving the blow's line (head_mps): a slip, or a duck when mostly downwards;
-//   - a glove moving towards the blow's path, relative to the head (glove_mps): a block, or a parry when it goes on
-//     across the path (8-25 cm past its line);
+//   - a glove moving towards the blow's path, relative to the head (glove_mps), or along it when already on it (within
+//     15 cm of its line: into the face, or out to meet it): a block, or a parry when it is across the path as the
+//     blow arrives (8-25 cm past its line on the other side from where it rose);
 // that starts after the strike began (a motion already under way then is not an answer) and holds for two frames.
 // A glove that was on the path all along and blocked it is a block the user did not have to move for.
 
