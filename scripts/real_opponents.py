@@ -233,8 +233,8 @@ def main():
     fastest = {}
     for row in rows:
         for move, entry in row["motion"].get("by_move", {}).items():
-            best = fastest.setdefault(move, {"wrist_mps": 0.0, "ankle_mps": 0.0, "elbow_radps": 0.0, "knee_radps": 0.0, "over_library": 0, "max_over_library": 0.0, "held_back_frames": 0, "frames": 0})
-            for joint in ("wrist_mps", "ankle_mps", "elbow_radps", "knee_radps"):
+            best = fastest.setdefault(move, {"wrist_mps": 0.0, "ankle_mps": 0.0, "elbow_radps": 0.0, "knee_radps": 0.0, "elbow_mps": 0.0, "over_library": 0, "max_over_library": 0.0, "held_back_frames": 0, "frames": 0})
+            for joint in ("wrist_mps", "ankle_mps", "elbow_radps", "knee_radps", "elbow_mps"):
                 best[joint] = max(best[joint], entry.get(joint, 0.0))
             # Over: more than the speed limit's tolerance (0.1%) above the bar.
             ratios = entry.get("over_library", {}).values()
@@ -264,7 +264,7 @@ def main():
           f"{overall['distance_between_strikes_legs']['median_of_bouts'] or 0:.2f} legs; overshoot max {overall['overshoot_max_m'] * 100:.1f} cm",
           file=sys.stderr)
     for move, best in sorted(fastest.items()):
-        print(f"  {move:8s} fastest wrist {best['wrist_mps']:5.1f} m/s ankle {best['ankle_mps']:5.1f} m/s elbow {best['elbow_radps']:5.1f} rad/s "
+        print(f"  {move:8s} fastest wrist {best['wrist_mps']:5.1f} m/s ankle {best['ankle_mps']:5.1f} m/s elbow {best['elbow_radps']:5.1f} rad/s {best['elbow_mps']:5.1f} m/s "
               f"knee {best['knee_radps']:5.1f} rad/s; at most {best['max_over_library']:.3f} of the library's, over it in {best['over_library']} bouts; "
               f"held back {best['held_back_frames']}/{best['frames']} frames", file=sys.stderr)
     def pooled_by(key, what):

@@ -449,14 +449,15 @@ def speed_section(opponents):
     for move, best in sorted(fastest.items()):
         bar = bars.get(move, {})
         rows.append((move, f"{f(best['wrist_mps'], 2)} ({f(bar.get('wrist_mps'), 1)})", f"{f(best['ankle_mps'], 2)} ({f(bar.get('ankle_mps'), 1)})",
-                     f"{f(best['elbow_radps'], 1)} ({f(bar.get('elbow_radps'), 1)})", f"{f(best['knee_radps'], 1)} ({f(bar.get('knee_radps'), 1)})",
+                     f"{f(best['elbow_radps'], 1)} ({f(bar.get('elbow_radps'), 1)})", f"{f(best.get('elbow_mps'), 2)} ({f(bar.get('elbow_mps'), 1)})",
+                     f"{f(best['knee_radps'], 1)} ({f(bar.get('knee_radps'), 1)})",
                      f(best["max_over_library"], 3), best["over_library"]))
     return ["## Human speed", "",
             "The fighter's fastest joints in each kind of move over every bout against the recorded people, and in brackets "
             f"the library's fastest for that kind (the bar the speed limit holds it to, on the {character}): wrists and ankles "
-            "in m/s, elbow and knee bend rates in rad/s; the largest ratio of any joint to its bar, and the bouts where one "
+            "in m/s, elbow and knee bend rates in rad/s, the elbow's own travel (its swing about the shoulder) in m/s; the largest ratio of any joint to its bar, and the bouts where one "
             "went over it by more than 0.1%.", "",
-            table(["move", "wrist", "ankle", "elbow", "knee", "most over the library's", "bouts over"], rows), ""]
+            table(["move", "wrist", "ankle", "elbow bend", "elbow travel", "knee", "most over the library's", "bouts over"], rows), ""]
 
 
 def distance_section(opponents):

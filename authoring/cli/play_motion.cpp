@@ -4,14 +4,16 @@ namespace kumite::cli {
 namespace {
 
 nlohmann::json speeds_json(const JointSpeeds& speeds) {
-    return {{"wrist_mps", speeds.wrist_mps}, {"ankle_mps", speeds.ankle_mps}, {"elbow_radps", speeds.elbow_radps}, {"knee_radps", speeds.knee_radps}};
+    return {{"wrist_mps", speeds.wrist_mps}, {"ankle_mps", speeds.ankle_mps}, {"elbow_radps", speeds.elbow_radps}, {"knee_radps", speeds.knee_radps},
+            {"elbow_mps", speeds.elbow_mps}};
 }
 
 // Over the library's: the ratio of each joint's speed to the library's for the kind (0 when the library has none).
 nlohmann::json ratios_json(const JointSpeeds& speeds, const JointSpeeds& library) {
     auto ratio = [](double value, double bar) { return bar > 0.0 ? value / bar : 0.0; };
     return {{"wrist", ratio(speeds.wrist_mps, library.wrist_mps)}, {"ankle", ratio(speeds.ankle_mps, library.ankle_mps)},
-            {"elbow", ratio(speeds.elbow_radps, library.elbow_radps)}, {"knee", ratio(speeds.knee_radps, library.knee_radps)}};
+            {"elbow", ratio(speeds.elbow_radps, library.elbow_radps)}, {"knee", ratio(speeds.knee_radps, library.knee_radps)},
+            {"elbow_travel", ratio(speeds.elbow_mps, library.elbow_mps)}};
 }
 
 } // namespace

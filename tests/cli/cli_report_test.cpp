@@ -45,6 +45,7 @@ TEST_CASE("cli: report and play --html draw the bout's events, counts equal to t
     std::map<std::string, std::map<std::string, long long>> outcomes_by_state; // the fighter's state as its events say
     std::string state = "rest";
     std::map<std::string, double> fastest_arm;
+    double fastest_block_wrist = 0.0, fastest_block_elbow = 0.0;
     long long hits = 0, targets = 0;
     std::istringstream lines(read_text(folder / "bout.jsonl"));
     for (std::string line; std::getline(lines, line);) {
@@ -54,9 +55,13 @@ TEST_CASE("cli: report and play --html draw the bout's events, counts equal to t
         if (event["type"] == "user_strike_end") ++outcomes_by_state[state][event["outcome"].get<std::string>()];
         if (event["type"] == "strike") hits += event["result"] == "hit", targets += event.contains("target");
         if (event["type"] == "user_strike_end") ++outcomes[event["outcome"].get<std::string>()];
-        if (event["type"] == "user_strike_end" && event.contains("arm_speed_mps")) {
+        if (event["type"] == "user_strike_end" && event.contains("arm_from_shoulder_mps")) {
             ++arm_speeds[event["move"].get<std::string>()];
-            fastest_arm[event["move"].get<std::string>()] = std::max(fastest_arm[event["move"].get<std::string>()], event["arm_speed_mps"].get<double>());
+            fastest_arm[event["move"].get<std::string>()] = std::max(fastest_arm[event["move"].get<std::string>()], event["arm_from_shoulder_mps"].get<double>());
+        }
+        if (event["type"] == "user_strike_end" && event.contains("wrist_mps")) {
+            fastest_block_wrist = std::max(fastest_block_wrist, event["wrist_mps"].get<double>());
+            fastest_block_elbow = std::max(fastest_block_elbow, event["elbow_mps"].get<double>());
         }
     }
     const nlohmann::json report = nlohmann::json::parse(read_text(folder / "bout.json"));
@@ -65,13 +70,21 @@ TEST_CASE("cli: report and play --html draw the bout's events, counts equal to t
     CHECK(types["bout_end"] == 1);
     CHECK(types["track"] >= 200); // 10 a second
     CHECK(types["strike"] == report["strikes"].get<long long>());
-    // The blocks' arm speeds (no pop: issue 26), per block as the events give them.
-    const nlohmann::json& speeds = report["user_strikes"]["arm_speed_mps"];
+    // The blocks' arm speeds relative to the shoulder, per block as the events give them.
+    const nlohmann::json& speeds = report["user_strikes"]["arm_from_shoulder_mps"];
     CHECK(arm_speeds["synthesized"] > 0);
     CHECK(speeds["synthesized"]["count"].get<long long>() == arm_speeds["synthesized"]);
     CHECK(speeds["synthesized"]["max"].get<double>() == Approx(fastest_arm["synthesized"]));
     CHECK(speeds["block_clip"]["count"].get<long long>() == arm_speeds["block_clip"]);
     CHECK(report["user_strikes"]["block_clip_speed_ratio"]["count"].get<long long>() == arm_speeds["block_clip"]);
+    // The instruments agree: a block's wrist and elbow (world) are what the motion meter measures on the frames of a
+    // block, so no block event is faster than the meter's fastest block frame, and the fastest block is that frame.
+    const nlohmann::json& block_motion = report["motion"]["by_move"]["block"];
+    CHECK(fastest_block_wrist > 0.0);
+    CHECK(fastest_block_wrist <= block_motion["wrist_mps"].get<double>() + 1e-9);
+    CHECK(fastest_block_elbow <= block_motion["elbow_mps"].get<double>() + 1e-9);
+    CHECK(report["user_strikes"]["blocking_wrist_mps"]["max"].get<double>() == Approx(fastest_block_wrist));
+    CHECK(report["user_strikes"]["blocking_elbow_mps"]["max"].get<double>() == Approx(fastest_block_elbow));
 
     // The user's strikes by what the fighter was doing when each ended: as the events say, summing to the outcomes;
     // this bout (a boxer shadow boxing, orders every 1.5 s) has blows ending while it strikes and while it does not.

@@ -130,7 +130,7 @@ TEST_CASE("fighter: a captured block's hold and release move the arm no faster t
             for (const FighterEvent& e : b.fighter->events()) {
                 if (e.type == FighterEvent::Type::user_strike) close_block();
                 if (e.type == FighterEvent::Type::user_strike_end && e.user_strike.move == DefenceMove::block_clip) {
-                    clip_speed = e.user_strike.clip_arm_speed_mps;
+                    clip_speed = e.user_strike.clip_arm_from_shoulder_mps;
                     last_t = -1.0;
                 }
             }
@@ -218,10 +218,10 @@ TEST_CASE("fighter: with a block speed limit a captured block moves the arm no f
             b.step_against(user, frame / 60.0);
             for (const FighterEvent& e : b.fighter->events()) {
                 const UserStrikeEvent& strike = e.user_strike;
-                if (e.type != FighterEvent::Type::user_strike_end || strike.move != DefenceMove::block_clip || strike.arm_speed_mps < 0.0) continue;
+                if (e.type != FighterEvent::Type::user_strike_end || strike.move != DefenceMove::block_clip || strike.arm_from_shoulder_mps < 0.0) continue;
                 ++blocks;
-                within += strike.arm_speed_mps <= 1.01 * strike.clip_arm_speed_mps;
-                worst = std::max(worst, strike.arm_speed_mps / strike.clip_arm_speed_mps);
+                within += strike.arm_from_shoulder_mps <= 1.01 * strike.clip_arm_from_shoulder_mps;
+                worst = std::max(worst, strike.arm_from_shoulder_mps / strike.clip_arm_from_shoulder_mps);
             }
             b.fighter->clear_events();
         }

@@ -42,6 +42,15 @@ TEST_CASE("joint speeds: a wrist moved 10 cm in a 60 Hz frame is 6 m/s, an elbow
     const JointSpeeds elbow = joint_speeds(still, LimbSample::of(anatomy, bent), 0.1);
     CHECK(elbow.elbow_radps == Approx(5.0).margin(1e-6));
     CHECK(elbow.knee_radps == 0.0);
+    CHECK(elbow.elbow_mps == 0.0); // the elbow itself stayed
+
+    // The elbow swung 0.2 m round the shoulder-wrist line (the wrist where it was, the bend the same): no bend, no
+    // wrist speed, the elbow's own travel.
+    std::vector<Eigen::Vector3d> swung = rest;
+    swung[arm.middle] += Eigen::Vector3d(0.0, 0.2, 0.0);
+    const JointSpeeds swing = joint_speeds(still, LimbSample::of(anatomy, swung), 0.1);
+    CHECK(swing.wrist_mps == 0.0);
+    CHECK(swing.elbow_mps == Approx(2.0));
 }
 
 TEST_CASE("joint speeds: the library's fastest punches, kicks and guard on the reference database are a person's", "[runtime][corpus]") {
@@ -202,6 +211,7 @@ TEST_CASE("fighter: no joint moves faster than the library's fastest for its kin
         CHECK(fastest.ankle_mps <= 1.002 * bar.ankle_mps);
         CHECK(fastest.elbow_radps <= 1.002 * bar.elbow_radps + 1e-9);
         CHECK(fastest.knee_radps <= 1.002 * bar.knee_radps + 1e-9);
+        CHECK(fastest.elbow_mps <= 1.002 * bar.elbow_mps + 1e-9); // the elbow's own travel too: no swing round the shoulder
         CHECK(fastest.wrist_mps <= 1.002 * k_human_extremity_mps);
         CHECK(fastest.ankle_mps <= 1.002 * k_human_extremity_mps);
     }
@@ -232,6 +242,7 @@ TEST_CASE("fighter: no joint moves faster than the library's fastest for its kin
         CHECK(fastest.elbow_radps <= 1.002 * bar.elbow_radps + 1e-9);
         CHECK(fastest.ankle_mps <= 1.002 * bar.ankle_mps);
         CHECK(fastest.knee_radps <= 1.002 * bar.knee_radps + 1e-9);
+        CHECK(fastest.elbow_mps <= 1.002 * bar.elbow_mps + 1e-9);
         CHECK(fastest.wrist_mps <= 1.002 * k_human_extremity_mps);
         CHECK(fastest.ankle_mps <= 1.002 * k_human_extremity_mps);
     }

@@ -71,11 +71,13 @@ void BoutCounters::tally(const FighterEvent& event, long long frame, const Motio
         if (event.user_strike.forearm_to_path_m >= 0.0) forearm_to_path_m.add(event.user_strike.forearm_to_path_m);
         if (event.user_strike.move_after_seen_s >= 0.0) defence_move_after_seen_s.add(event.user_strike.move_after_seen_s);
         not_defended += event.user_strike.detected && !event.user_strike.defended;
-        if (const UserStrikeEvent& block = event.user_strike; block.arm_speed_mps >= 0.0) {
-            if (block.move == DefenceMove::synthesized) synthesized_arm_speed_mps.add(block.arm_speed_mps);
+        if (event.user_strike.wrist_mps >= 0.0) blocking_wrist_mps.add(event.user_strike.wrist_mps);
+        if (event.user_strike.elbow_mps >= 0.0) blocking_elbow_mps.add(event.user_strike.elbow_mps);
+        if (const UserStrikeEvent& block = event.user_strike; block.arm_from_shoulder_mps >= 0.0) {
+            if (block.move == DefenceMove::synthesized) synthesized_arm_from_shoulder_mps.add(block.arm_from_shoulder_mps);
             if (block.move == DefenceMove::block_clip) {
-                block_clip_arm_speed_mps.add(block.arm_speed_mps);
-                if (block.clip_arm_speed_mps > 0.0) block_clip_speed_ratio.add(block.arm_speed_mps / block.clip_arm_speed_mps);
+                block_clip_arm_from_shoulder_mps.add(block.arm_from_shoulder_mps);
+                if (block.clip_arm_from_shoulder_mps > 0.0) block_clip_speed_ratio.add(block.arm_from_shoulder_mps / block.clip_arm_from_shoulder_mps);
             }
         }
         defence_joint_limit_violations += event.joint_limit_violations;

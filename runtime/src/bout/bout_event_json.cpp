@@ -123,13 +123,15 @@ nlohmann::json event_object(const Bout& bout, const BoutEvent& bout_event) {
         if (event.user_strike.approach_s >= 0.0) line["approach_s"] = event.user_strike.approach_s;
         if (event.user_strike.blocking_arm >= 0) line["blocking_arm"] = event.user_strike.blocking_arm == 0 ? "left" : "right";
         if (event.user_strike.block_clip >= 0) line["block_clip"] = bout.database().string(bout.database().clips[event.user_strike.block_clip].name);
-        if (event.user_strike.arm_speed_mps >= 0.0) line["arm_speed_mps"] = event.user_strike.arm_speed_mps;
+        if (event.user_strike.arm_from_shoulder_mps >= 0.0) line["arm_from_shoulder_mps"] = event.user_strike.arm_from_shoulder_mps;
+        if (event.user_strike.wrist_mps >= 0.0) line["wrist_mps"] = event.user_strike.wrist_mps;
+        if (event.user_strike.elbow_mps >= 0.0) line["elbow_mps"] = event.user_strike.elbow_mps;
         line["defended"] = event.user_strike.defended;
         if (event.user_strike.moved_s >= 0.0) {
             line["moved_s"] = event.user_strike.moved_s;
             line["move_after_seen_s"] = event.user_strike.move_after_seen_s;
         }
-        if (event.user_strike.clip_arm_speed_mps >= 0.0) line["clip_arm_speed_mps"] = event.user_strike.clip_arm_speed_mps;
+        if (event.user_strike.clip_arm_from_shoulder_mps >= 0.0) line["clip_arm_from_shoulder_mps"] = event.user_strike.clip_arm_from_shoulder_mps;
         line["joint_limit_violations"] = event.joint_limit_violations;
         line["foot_shift_m"] = event.foot_shift_m;
         break;

@@ -164,7 +164,7 @@ bool BlockClips::choose(const BlockClipQuery& query, const RestAnatomy& anatomy,
         }
     }
     if (best_clip == nullptr) return false;
-    best.clip_arm_speed_mps = best_clip->arm_speed_per_m[parent] * length;
+    best.clip_arm_from_shoulder_mps = best_clip->arm_speed_per_m[parent] * length;
     choice = best;
     return true;
 }

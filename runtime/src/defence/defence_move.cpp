@@ -109,7 +109,7 @@ void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, doubl
     hand.strike.move_after_seen_s = t_s - hand.strike.t_s;
 }
 
-void Defence::use_block_clip(int clip, double clip_arm_speed_mps, double ramp_s, double before_m) {
+void Defence::use_block_clip(int clip, double clip_arm_from_shoulder_mps, double ramp_s, double before_m) {
     if (m_move != DefenceMove::synthesized || m_move_hand < 0) return;
     m_move = DefenceMove::block_clip;
     m_ramp_s = ramp_s;
@@ -120,7 +120,7 @@ void Defence::use_block_clip(int clip, double clip_arm_speed_mps, double ramp_s,
     UserStrikeEvent& strike = m_hands[m_move_hand].strike;
     strike.move = DefenceMove::block_clip;
     strike.block_clip = clip;
-    strike.clip_arm_speed_mps = clip_arm_speed_mps;
+    strike.clip_arm_from_shoulder_mps = clip_arm_from_shoulder_mps;
     // The strike's event of this frame says so too.
     for (int e = 0; e < m_event_count; ++e) {
         UserStrikeEvent& event = m_events[e];
@@ -145,10 +145,12 @@ double Defence::time_to_block_point() const {
     return speed_squared > 1e-9 ? std::max(0.0, (m_wrist_target - hand.position).dot(hand.velocity) / speed_squared) : 0.0;
 }
 
-void Defence::note_arm_speed(double speed_mps) {
+void Defence::note_arm_speed(double from_shoulder_mps, double wrist_mps, double elbow_mps) {
     if (!is_block(m_move) || m_move_hand < 0 || !m_hands[m_move_hand].striking) return;
     UserStrikeEvent& strike = m_hands[m_move_hand].strike;
-    strike.arm_speed_mps = std::max(strike.arm_speed_mps, speed_mps);
+    strike.arm_from_shoulder_mps = std::max(strike.arm_from_shoulder_mps, from_shoulder_mps);
+    strike.wrist_mps = std::max(strike.wrist_mps, wrist_mps);
+    strike.elbow_mps = std::max(strike.elbow_mps, elbow_mps);
 }
 
 double Defence::shortest_ramp_s(double travel_m) const {

@@ -25,6 +25,8 @@ void CapturedBlockArm::measure_from_shown(const Defence& defence, const Defender
         m_last_wrist = defender.wrist[side] - defender.shoulder[side];
         m_last_elbow = defender.elbow[side] - defender.shoulder[side];
         m_last_s = shown_s;
+        m_last_world = {defender.shoulder[side], defender.elbow[side], defender.wrist[side]};
+        m_last_world_s = shown_s;
     }
     m_measure_from_shown = false;
 }
@@ -80,7 +82,7 @@ void CapturedBlockArm::start(Defence& defence, const RestAnatomy& anatomy, const
                                                swivel_keeping_bend(query.shoulder, asked, bend, reference, 0.0), reference);
     const Eigen::Vector3d contact = placed.extremity + k_block_contact_fraction * (placed.middle - placed.extremity);
     if ((contact - meeting.point).norm() > settings.block_contact_m) return;
-    defence.use_block_clip(m_choice.clip, m_choice.clip_arm_speed_mps, std::max(0.03, 0.6 * meeting.time_s), meeting.before_m);
+    defence.use_block_clip(m_choice.clip, m_choice.clip_arm_from_shoulder_mps, std::max(0.03, 0.6 * meeting.time_s), meeting.before_m);
     m_played = 0.0;
     m_played_s = now_s;
 }
@@ -130,21 +132,27 @@ void CapturedBlockArm::limit_speed(const Defence& defence, const LimbChain& chai
     double speed_ratio = defence.settings().block_clip_max_speed_ratio; // 0: no limit
     if (lagging || defence.move_strike_over() || defence.time_to_block_point() <= 0.0) speed_ratio = speed_ratio > 0.0 ? std::min(speed_ratio, 1.0) : 1.0;
     if (speed_ratio > 0.0 && m_last_s >= 0.0 && now_s > m_last_s) {
-        m_lagging = limit_arm_step(chain, reference, swivel, m_last_wrist, m_last_elbow, speed_ratio * m_choice.clip_arm_speed_mps * (now_s - m_last_s),
+        m_lagging = limit_arm_step(chain, reference, swivel, m_last_wrist, m_last_elbow, speed_ratio * m_choice.clip_arm_from_shoulder_mps * (now_s - m_last_s),
                                    wrist, bend);
     }
 }
 
-void CapturedBlockArm::note_shown(Defence& defence, const Eigen::Vector3d& wrist, const Eigen::Vector3d& elbow, double now_s) {
+void CapturedBlockArm::note_shown(Defence& defence, const ShownArm& arm, double now_s) {
     // The blocking arm's fastest move relative to its shoulder, for the block's event (no pop: measured against the
-    // captured clip's own).
+    // captured clip's own), and its wrist's and elbow's in the world (as the motion meter measures them).
+    const Eigen::Vector3d wrist = arm.wrist - arm.shoulder, elbow = arm.elbow - arm.shoulder;
     if (m_last_s >= 0.0 && now_s - m_last_s > 1e-6) {
+        const double dt_s = now_s - m_last_s;
         const double step = std::max((wrist - m_last_wrist).norm(), (elbow - m_last_elbow).norm());
-        defence.note_arm_speed(step / (now_s - m_last_s));
+        const bool have_world = m_last_world_s == m_last_s; // the world's positions were noted with the same frame
+        defence.note_arm_speed(step / dt_s, have_world ? (arm.wrist - m_last_world.wrist).norm() / dt_s : 0.0,
+                               have_world ? (arm.elbow - m_last_world.elbow).norm() / dt_s : 0.0);
     }
     m_last_wrist = wrist;
     m_last_elbow = elbow;
     m_last_s = now_s;
+    m_last_world = arm;
+    m_last_world_s = now_s;
 }
 
 } // namespace kumite

@@ -40,14 +40,19 @@ public:
     // never faster than the clip once the fist is past or over (the hold and the release) or when `lagging`.
     void limit_speed(const Defence& defence, const LimbChain& chain, const Eigen::Vector3d& reference, double swivel, bool lagging, double now_s,
                      Eigen::Vector3d& wrist, Eigen::Vector3d& bend);
-    // The blocking arm as shown this frame (relative to its shoulder): its speed told to the defence, kept for the next.
-    void note_shown(Defence& defence, const Eigen::Vector3d& wrist, const Eigen::Vector3d& elbow, double now_s);
+    // The blocking arm as shown this frame (world): its speeds told to the defence, kept for the next.
+    struct ShownArm {
+        Eigen::Vector3d shoulder = Eigen::Vector3d::Zero(), elbow = Eigen::Vector3d::Zero(), wrist = Eigen::Vector3d::Zero();
+    };
+    void note_shown(Defence& defence, const ShownArm& arm, double now_s);
 
 private:
     BlockClips m_clips;                   // the database's captured blocks
     BlockClipChoice m_choice;             // the one being played (block_clip moves)
     Eigen::Vector3d m_last_wrist = Eigen::Vector3d::Zero(), m_last_elbow = Eigen::Vector3d::Zero(); // relative to the shoulder
     double m_last_s = -1.0;               // when they were measured; < 0: not yet in this block
+    ShownArm m_last_world;                // the same arm in the world
+    double m_last_world_s = -1.0;         // when
     bool m_measure_from_shown = false;    // a block started last frame: measured from the pose shown then
     bool m_lagging = false;               // the arm was held back to its clip's speed last frame: not where the blend put it
     double m_played = 0.0;                // clip frames of the captured block played since its start frame

@@ -223,11 +223,11 @@ void FighterDefence::apply(double now_s, int striking_segment, const LimbPins& p
 
 void FighterDefence::note_shown_arm(double now_s, const CharacterBody& body) {
     if (m_arm_to_note < 0) return;
-    // The blocking arm's fastest move relative to its shoulder, for the block's event: on the pose shown, after the
-    // speed limit (what the user saw, not what the edits asked for).
+    // The blocking arm's fastest moves, for the block's event: on the pose shown, after the speed limit (what the user
+    // saw, not what the edits asked for).
     const LimbChain& chain = body.anatomy().limbs[m_arm_to_note];
     const auto shown = body.positions();
-    m_block_arm.note_shown(m_defence, shown[chain.extremity] - shown[chain.root], shown[chain.middle] - shown[chain.root], now_s);
+    m_block_arm.note_shown(m_defence, {shown[chain.root], shown[chain.middle], shown[chain.extremity]}, now_s);
     m_arm_to_note = -1;
 }
 

@@ -49,6 +49,7 @@ void JointSpeeds::keep_fastest(const JointSpeeds& other) {
     ankle_mps = std::max(ankle_mps, other.ankle_mps);
     elbow_radps = std::max(elbow_radps, other.elbow_radps);
     knee_radps = std::max(knee_radps, other.knee_radps);
+    elbow_mps = std::max(elbow_mps, other.elbow_mps);
 }
 
 LimbSample LimbSample::of(const RestAnatomy& anatomy, std::span<const Eigen::Vector3d> positions) {
@@ -57,6 +58,7 @@ LimbSample LimbSample::of(const RestAnatomy& anatomy, std::span<const Eigen::Vec
         const LimbChain& limb = anatomy.limbs[int(k_limbs[k])];
         sample.extremity[k] = positions[limb.extremity];
         sample.flexion_rad[k] = bend_angle_rad(positions[limb.root], positions[limb.middle], positions[limb.extremity]);
+        if (k < 2) sample.elbow[k] = positions[limb.middle];
     }
     return sample;
 }
@@ -69,6 +71,7 @@ JointSpeeds joint_speeds(const LimbSample& before, const LimbSample& after, doub
         speeds.ankle_mps = std::max(speeds.ankle_mps, (after.extremity[k + 2] - before.extremity[k + 2]).norm() / dt_s);
         speeds.elbow_radps = std::max(speeds.elbow_radps, std::abs(after.flexion_rad[k] - before.flexion_rad[k]) / dt_s);
         speeds.knee_radps = std::max(speeds.knee_radps, std::abs(after.flexion_rad[k + 2] - before.flexion_rad[k + 2]) / dt_s);
+        speeds.elbow_mps = std::max(speeds.elbow_mps, (after.elbow[k] - before.elbow[k]).norm() / dt_s);
     }
     return speeds;
 }
@@ -122,7 +125,7 @@ std::array<JointSpeeds, k_move_kind_count> library_joint_speeds(const MotionData
         if (!clip_move_kind(db, c, kind)) continue;
         const DbClip& clip = db.clips[c];
         // The fastest and second-fastest frame of each measure.
-        std::array<std::array<double, 2>, 4> top{};
+        std::array<std::array<double, 2>, 5> top{};
         LimbSample last;
         for (int f = 0; f < int(clip.frame_count); ++f) {
             db_mir_frame_load(frame, db.mir_frames[clip.first_pose + f]);
@@ -130,15 +133,15 @@ std::array<JointSpeeds, k_move_kind_count> library_joint_speeds(const MotionData
             const LimbSample sample = LimbSample::of(anatomy, decoder.model_positions());
             if (f > 0) {
                 const JointSpeeds s = joint_speeds(last, sample, dt);
-                const double values[4] = {s.wrist_mps, s.ankle_mps, s.elbow_radps, s.knee_radps};
-                for (int m = 0; m < 4; ++m) {
+                const double values[5] = {s.wrist_mps, s.ankle_mps, s.elbow_radps, s.knee_radps, s.elbow_mps};
+                for (int m = 0; m < 5; ++m) {
                     if (values[m] > top[m][0]) top[m] = {values[m], top[m][0]};
                     else top[m][1] = std::max(top[m][1], values[m]);
                 }
             }
             last = sample;
         }
-        fastest[int(kind)].keep_fastest({top[0][1], top[1][1], top[2][1], top[3][1]});
+        fastest[int(kind)].keep_fastest({top[0][1], top[1][1], top[2][1], top[3][1], top[4][1]});
     }
     return fastest;
 }

@@ -65,7 +65,7 @@ struct BlockClipChoice {
     double score = 0.0;
     int course_point = 0;     // the query's course point met
     double contact_error_m = 0.0;   // the clip's contact at the meeting frame, on the fighter, to the target (before the offset)
-    double clip_arm_speed_mps = 0.0; // the fastest the clip moves the wrist or elbow relative to the shoulder, as played
+    double clip_arm_from_shoulder_mps = 0.0; // the fastest the clip moves the wrist or elbow relative to the shoulder, as played
 };
 
 class BlockClips {

@@ -53,7 +53,8 @@ struct BoutCounters {
     long long not_defended = 0; // blows seen that defence.defend_share left undefended
     // Per block, the fastest the blocking wrist or elbow moved relative to the shoulder while the fist came: captured
     // and synthesized blocks, and a captured one's against the same move in its clip (no pop: at most 1).
-    ValueHistogram block_clip_arm_speed_mps{1e-3, 1e3}, synthesized_arm_speed_mps{1e-3, 1e3}, block_clip_speed_ratio{1e-3, 1e3};
+    ValueHistogram block_clip_arm_from_shoulder_mps{1e-3, 1e3}, synthesized_arm_from_shoulder_mps{1e-3, 1e3}, block_clip_speed_ratio{1e-3, 1e3};
+    ValueHistogram blocking_wrist_mps{1e-3, 1e3}, blocking_elbow_mps{1e-3, 1e3}; // world, as the motion meter measures
     long long defence_joint_limit_violations = 0;
     double defence_foot_shift_m = 0.0; // the largest
     // The fighter's answers to the blows that landed: how many, from a captured clip, the angle between the clip's

@@ -111,8 +111,12 @@ struct UserStrikeEvent {
     bool detected = true;            // false: it arrived without having been seen coming (counted, not defended)
     int blocking_arm = -1;           // blocked: the forearm that met it (0 left, 1 right)
     int block_clip = -1;             // block_clip: the database clip played
-    double arm_speed_mps = -1.0;     // ended blocks: the fastest the blocking wrist or elbow moved relative to the shoulder
-    double clip_arm_speed_mps = -1.0; // block_clip: the same for the captured clip itself, on this arm
+    // Ended blocks: the fastest the blocking wrist or elbow moved relative to its shoulder (what a captured block's
+    // speed limit compares with the clip's own, clip_arm_from_shoulder_mps), and the fastest the wrist and the elbow
+    // moved in the world (what the motion meter measures: wrist_mps, elbow_mps).
+    double arm_from_shoulder_mps = -1.0;
+    double clip_arm_from_shoulder_mps = -1.0; // block_clip: the captured clip's own, on this arm
+    double wrist_mps = -1.0, elbow_mps = -1.0;
     Eigen::Vector3d hand_velocity = Eigen::Vector3d::Zero(); // ended: the hand's velocity then (world, m/s): how a blow that landed pushes
     // Slipped: how far outside the hit radius the hand's path passed where the part it was aimed at would have been
     // without the lean (the head by the slip's offset as shown, the chest by half of it); <= 0: the slip is what kept
@@ -173,7 +177,7 @@ public:
     double intercept_s() const { return m_intercept_s; }
     // The block that started is a captured one: its clip, the clip's own arm speed, the blend in and where it meets
     // the course (this far before the target).
-    void use_block_clip(int clip, double clip_arm_speed_mps, double ramp_s, double before_m);
+    void use_block_clip(int clip, double clip_arm_from_shoulder_mps, double ramp_s, double before_m);
     // Where the course of the strike the move answers is `before_m` short of its target, and when (from now).
     bool course_point(double before_m, Eigen::Vector3d& point, double& time_s) const;
     // How long the fist still needs to the block's meeting point (block_wrist_target), along its course now; 0 once past.
@@ -181,7 +185,7 @@ public:
     // The strike the move answers is over (blocked, landed, gone back): what is left is the hold and the release.
     bool move_strike_over() const { return m_move_hand < 0 || !m_hands[m_move_hand].striking; }
     // The blocking arm's speed this frame (relative to its shoulder), for the block's event.
-    void note_arm_speed(double speed_mps);
+    void note_arm_speed(double from_shoulder_mps, double wrist_mps, double elbow_mps);
     const Eigen::Vector3d& block_wrist_target() const { return m_wrist_target; }
     double slip_weight() const { return m_move == DefenceMove::slip ? m_weight : 0.0; }
     const Eigen::Vector3d& slip_offset() const { return m_slip_offset; } // full lean, world, horizontal

@@ -1,9 +1,10 @@
 #pragma once
-// How fast a body moves, by kind of move (issue 44, "human speed, everywhere"): the fastest wrist and ankle (m/s,
-// world) and the fastest elbow and knee (rad/s: how fast the joint bends or straightens, the angle between upper
-// arm and forearm, thigh and shin; the forearm's twist is not counted: the decoder's twist follows the hand's
-// frame and is no joint speed a person could be measured at). The fighter's are measured every frame (motion_meter.h); the library's are those of the
-// database's clips played on a character, the bar a fighter must stay under.
+// How fast a body moves, by kind of move: the fastest wrist and ankle (m/s, world), the fastest elbow and knee
+// (rad/s: how fast the joint bends or straightens, the angle between upper arm and forearm, thigh and shin; the
+// forearm's twist is not counted: the decoder's twist follows the hand's frame and is no joint speed a person could
+// be measured at), and the fastest elbow's own travel (m/s, world: its swing about the shoulder, which the bend does
+// not see). The fighter's are measured every frame (motion_meter.h); the library's are those of the database's clips
+// played on a character, the bar a fighter must stay under (the speed limit holds every one of them to it).
 
 #include "kumite/core/character_rig.h"
 #include "kumite/core/motion_database.h"
@@ -33,6 +34,7 @@ inline bool is_strike_kind(MoveKind kind) {
 
 struct JointSpeeds {
     double wrist_mps = 0.0, ankle_mps = 0.0, elbow_radps = 0.0, knee_radps = 0.0;
+    double elbow_mps = 0.0; // the elbow's own travel (world): its swing about the shoulder, which elbow_radps does not see
     void keep_fastest(const JointSpeeds& other);
 };
 
@@ -40,6 +42,7 @@ struct JointSpeeds {
 struct LimbSample {
     std::array<Eigen::Vector3d, 4> extremity;   // wrist l, wrist r, ankle l, ankle r
     std::array<double, 4> flexion_rad;          // elbow l, elbow r, knee l, knee r: 0 straight
+    std::array<Eigen::Vector3d, 2> elbow;       // elbow l, elbow r (world)
     static LimbSample of(const RestAnatomy& anatomy, std::span<const Eigen::Vector3d> positions);
 };
 // The speeds from `before` to `after`, `dt_s` apart.
