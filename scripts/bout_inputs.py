@@ -26,11 +26,16 @@ def database(kumite, given, mocap, work):
     return baked
 
 
-def orders_every_2s(path, duration):
-    """A command script: from 1 s on, every 2 s, punch and kick in turn, left twice then right twice."""
+def orders_every(path, lines, duration, gap_s, end_margin_s=1.0):
+    """A command script: from 1 s on, every gap_s, the lines in turn, until end_margin_s before the end."""
     with open(path, "w") as out:
         t, n = 1.0, 0
-        while t < duration - 1.0:
-            out.write(f"{t:.2f} {'punch' if n % 2 == 0 else 'kick'} {'left' if (n // 2) % 2 == 0 else 'right'}\n")
-            t, n = t + 2.0, n + 1
+        while t < duration - end_margin_s:
+            out.write(f"{t:.2f} {lines[n % len(lines)]}\n")
+            t, n = t + gap_s, n + 1
     return path
+
+
+def orders_every_2s(path, duration):
+    """A command script: from 1 s on, every 2 s, punch and kick in turn, left twice then right twice."""
+    return orders_every(path, ["punch left", "kick left", "punch right", "kick right"], duration, 2.0)

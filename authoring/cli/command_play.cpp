@@ -56,11 +56,12 @@ const CommandSpec& play_spec() {
          {"headless", "", "no window (with --xr: no supervisor's window beside the headset)"},
          {"duration", "S", "seconds to run (default 30; the viewer runs until closed unless it is given)"},
          {"realtime", "", "step on the wall clock"},
-         {"seed", "N", "seed of the simulated user (default 1)"},
+         {"seed", "N", "seed of the simulated user and of the fighter's own attacks (default 1)"},
          {"aim", "latched|predicted", "the setting aim: strike where the head was at the order (default) or where it will be"},
          {"no-defence", "", "the setting defence.enabled = false: the fighter neither blocks nor slips"},
          {"difficulty", "LEVEL", "beginner, intermediate, person, expert or faster-than-a-person (default): the fighter's reaction\n"
-                                 "time and how often it defends (docs/room.md); applied first"},
+                                 "time, how often it defends, its tempo and combinations (docs/room.md); applied first"},
+         {"spar", "", "the setting attacks.on_its_own = true: the fighter attacks without orders (free sparring)"},
          {"settings", "FILE", "fighter settings, 'name = value' per line (applied before --aim, --no-defence and --set)"},
          {"set", "NAME=VALUE", "one fighter setting, e.g. --set human_speed=true (repeatable; applied last, in order)", true},
          {"print-settings", "", "print every setting with its value and meaning, in the form --settings reads, and exit"},
@@ -93,6 +94,7 @@ std::optional<int> read_play_settings(const Arguments& arguments, BoutOptions& o
         if (Result<void> set = play_setting_assign(options, "aim=" + *text); !set) return usage_error(play_spec(), "--aim: " + set.error().message);
     }
     if (arguments.has("no-defence")) options.fighter.defence.enabled = false;
+    if (arguments.has("spar")) options.attacks.on_its_own = true;
     for (const std::string& assignment : arguments.all("set")) {
         if (Result<void> set = play_setting_assign(options, assignment); !set) return usage_error(play_spec(), set.error().message);
     }
@@ -118,6 +120,7 @@ int run_play(int argc, char** argv) {
     if (!fighters_count) return usage_error(play_spec(), fighters_count.error().message);
     if (!seed) return usage_error(play_spec(), seed.error().message);
     BoutOptions options;
+    options.attack_seed = static_cast<std::uint64_t>(*seed);
     if (std::optional<int> status = read_play_settings(arguments, options)) return *status;
     if (arguments.has("print-settings")) {
         std::cout << play_settings_text(options);

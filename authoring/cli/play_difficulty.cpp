@@ -9,11 +9,13 @@ namespace kumite::cli {
 namespace {
 
 constexpr auto k_levels = std::to_array<DifficultyLevel>({
-    {"beginner", 0.35, 0.3, "reacts late (0.35 s) and defends one blow in three: most of the trainee's strikes land"},
-    {"intermediate", 0.25, 0.6, "a slow person's reaction (0.25 s), defends three blows in five"},
-    {"person", 0.20, 0.9, "a person's reaction (0.20 s), defends nine blows in ten"},
-    {"expert", 0.15, 1.0, "a trained fighter's reaction (0.15 s), defends every blow it sees"},
-    {"faster-than-a-person", 0.0, 1.0, "moves the frame it sees a blow, every blow (the default)"},
+    {"beginner", 0.35, 0.3, 4.0, 0.0,
+     "reacts late (0.35 s) and defends one blow in three: most of the trainee's strikes land; attacks every 4 s, single blows"},
+    {"intermediate", 0.25, 0.6, 3.0, 0.15,
+     "a slow person's reaction (0.25 s), defends three blows in five; attacks every 3 s, one in seven a combination"},
+    {"person", 0.20, 0.9, 2.5, 0.3, "a person's reaction (0.20 s), defends nine blows in ten; attacks every 2.5 s, three in ten combinations"},
+    {"expert", 0.15, 1.0, 2.0, 0.4, "a trained fighter's reaction (0.15 s), defends every blow it sees; attacks every 2 s, two in five combinations"},
+    {"faster-than-a-person", 0.0, 1.0, 2.0, 0.4, "moves the frame it sees a blow, every blow; attacks as the expert (the default)"},
 });
 
 } // namespace
@@ -22,7 +24,10 @@ std::span<const DifficultyLevel> difficulty_levels() { return k_levels; }
 
 const char* difficulty_of(const BoutOptions& options) {
     for (const DifficultyLevel& level : k_levels) {
-        if (options.fighter.defence.reaction_delay_s == level.reaction_delay_s && options.fighter.defence.defend_share == level.defend_share) return level.name;
+        if (options.fighter.defence.reaction_delay_s == level.reaction_delay_s && options.fighter.defence.defend_share == level.defend_share &&
+            options.attacks.tempo_s == level.tempo_s && options.attacks.combination_share == level.combination_share) {
+            return level.name;
+        }
     }
     return "custom";
 }
@@ -32,6 +37,8 @@ Result<void> apply_difficulty(BoutOptions& options, std::string_view name) {
         if (name != level.name) continue;
         options.fighter.defence.reaction_delay_s = level.reaction_delay_s;
         options.fighter.defence.defend_share = level.defend_share;
+        options.attacks.tempo_s = level.tempo_s;
+        options.attacks.combination_share = level.combination_share;
         return {};
     }
     std::string names;

@@ -1,6 +1,7 @@
 #pragma once
 // The fighter's difficulty by name, for `kumite play --difficulty LEVEL`: each level is a set of explicit settings
-// (its reaction time and how often it defends), applied before --settings and --set, which may change any of them.
+// (its reaction time, how often it defends, and when it attacks on its own, its tempo and its share of combinations),
+// applied before --settings and --set, which may change any of them.
 
 #include "kumite/core/result.h"
 #include "kumite/runtime/bout.h"
@@ -14,6 +15,8 @@ struct DifficultyLevel {
     const char* name;
     double reaction_delay_s; // defence.reaction_delay_s
     double defend_share;     // defence.defend_share
+    double tempo_s;          // attacks.tempo_s (its own attacks, free sparring)
+    double combination_share; // attacks.combination_share
     const char* what;        // one line for a trainer
 };
 

@@ -4,6 +4,7 @@
 #include "play_output.h"
 
 #include "kumite/runtime/bout_event_json.h"
+#include "kumite/runtime/combinations.h"
 
 #include <algorithm>
 #include <cmath>
@@ -129,6 +130,15 @@ nlohmann::json play_report_json(const Bout& bout) {
         entry["strikes"] = entry.value("strikes", 0LL) + strikes;
         entry["hits"] = entry.value("hits", 0LL) + hits;
     }
+    // Each combination's blows: thrown and landed, the first (it draws the guard) and the second (where it left).
+    nlohmann::json by_combination = nlohmann::json::object();
+    for (std::size_t c = 0; c < combinations().size() && c < counters.combination_strikes.size(); ++c) {
+        const auto& thrown = counters.combination_strikes[c];
+        const auto& landed = counters.combination_hits[c];
+        if (thrown[0] + thrown[1] == 0) continue;
+        by_combination[combinations()[c].name] = {{"first", {{"strikes", thrown[0]}, {"hits", landed[0]}}},
+                                                  {"second", {{"strikes", thrown[1]}, {"hits", landed[1]}}}};
+    }
     const double mean_latency = counters.command_to_strike_frames.mean(), max_latency = counters.command_to_strike_frames.max();
     return {{"frames", counters.frames},
             {"fighters", bout.fighter_count()},
@@ -139,6 +149,8 @@ nlohmann::json play_report_json(const Bout& bout) {
             {"hits", counters.hits},
             {"misses", counters.misses},
             {"blocked_by_user", counters.blocked_by_user},
+            {"own_attacks", counters.own_attacks},
+            {"combinations", by_combination},
             {"ignored_orders", counters.ignored_orders},
             {"order_outcomes",
              {{"performed", counters.orders_performed}, {"queued", counters.orders_queued}, {"expired", counters.orders_expired},

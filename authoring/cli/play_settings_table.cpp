@@ -23,6 +23,7 @@ constexpr const char* k_speed = "human speed";
 constexpr const char* k_defence = "defence";
 constexpr const char* k_reactions = "hit reactions";
 constexpr const char* k_orders = "orders, tracking and crowds";
+constexpr const char* k_attacks = "its own attacks (free sparring)";
 constexpr const char* k_filter = "the head filter behind predicted aim";
 constexpr const char* k_guard = "the user's guard";
 
@@ -130,6 +131,13 @@ const auto k_settings = std::to_array<Setting>({
 
     KUMITE_SETTING(fighter.hit_reactions, k_reactions, 0, 0, "", "a user strike that lands moves the fighter the way it pushed (a captured hit reaction)"),
     KUMITE_SETTING(fighter.reaction_blend_s, k_reactions, 0, 2, "s", "a hit reaction is blended in over this long"),
+
+    KUMITE_SETTING(attacks.on_its_own, k_attacks, 0, 0, "",
+                   "the fighter attacks without orders (free sparring; also --spar): a supervisor's order still comes first"),
+    KUMITE_SETTING(attacks.tempo_s, k_attacks, 0.3, 60, "s", "on its own, an attack this often on average (0.6 to 1.4 times it; --difficulty sets it)"),
+    KUMITE_SETTING(attacks.combination_share, k_attacks, 0, 1, "",
+                   "on its own, this share of its attacks are combinations: one-two, jab-hook, jab-body-head (--difficulty sets it)"),
+    KUMITE_SETTING(attacks.kick_share, k_attacks, 0, 1, "", "on its own, this share of its single blows are kicks, the rest punches"),
 
     KUMITE_SETTING(fighter.order_wait_s, k_orders, 0, 60, "s",
                    "an order that comes while the fighter is busy waits this long, a later one taking its place (0: refused at once)"),

@@ -5,6 +5,7 @@
 #include "support/reference_database.h"
 #include "support/standing_character.h"
 
+#include "kumite/runtime/combinations.h"
 #include "kumite/runtime/fighter.h"
 #include "kumite/runtime/simulated_user.h"
 
@@ -29,7 +30,7 @@ struct OrderBout {
         retriever = std::make_unique<Retriever>(db, settings);
         fighter = std::make_unique<Fighter>(db, *retriever, std::vector<CharacterRig*>{character.rig.get()}, fighter_settings);
     }
-    // 60 Hz against a still user; orders[k] is given at 3 s + 2.5 s * k.
+    // 60 Hz against a still user; orders[k] is given at 3 s + 2.5 s * k (orders of one combination together).
     void run(const std::vector<StrikeOrder>& orders) {
         SimulatedUser user(SimulatedKind::still, 3);
         const int frames = static_cast<int>((3.0 + 2.5 * orders.size() + 2.0) * 60);
@@ -39,6 +40,7 @@ struct OrderBout {
             if (next < orders.size() && t >= 3.0 + 2.5 * next) {
                 user.on_order(t);
                 fighter->order(orders[next++]);
+                while (next < orders.size() && orders[next].blow > 0) fighter->order(orders[next++]); // the rest of its combination
             }
             const Eigen::Vector3d head = user.head(t);
             fighter->step(t, &head);
@@ -138,4 +140,79 @@ TEST_CASE("fighter: an order the database cannot serve is refused with a reason,
     }
     CHECK(refused == 1);
     CHECK(strikes == 0);
+}
+
+TEST_CASE("fighter: a combination's second blow begins from the first's recoil, at the part its height names", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = kumite::test::reference_database();
+    if (!content) return;
+    const MotionDatabaseView db = content->view();
+    for (const auto& [name, reaches_head] : {std::pair{"kid", false}, std::pair{"brawler", true}, std::pair{"giant", true}}) {
+        OrderBout bout(db, name);
+        std::vector<StrikeOrder> orders;
+        for (int c = 0; c < int(combinations().size()); ++c) {
+            for (int blow = 0; blow < 2; ++blow) {
+                const CombinationBlow& b = combinations()[std::size_t(c)].blows[std::size_t(blow)];
+                orders.push_back({bout.retriever->semantics_id(b.semantics), b.side, b.kind, b.height, c, blow, false});
+            }
+        }
+        bout.run(orders);
+        // Each strike in turn: the combination's blows in order, the second begun within a few frames of the first's
+        // end (no recovery to the guard between), each the side, kind and height asked, a middle one at the body.
+        double first_ended_s = -1.0;
+        int strikes = 0, seconds = 0;
+        for (const FighterEvent& e : bout.events) {
+            if (e.type == FighterEvent::Type::strike_end && e.blow == 0) first_ended_s = e.t_s;
+            if (e.type == FighterEvent::Type::state && e.state == FighterState::strike && first_ended_s >= 0.0) {
+                INFO(name << ": a strike began " << e.t_s - first_ended_s << " s after the first blow's end");
+                CHECK(e.t_s - first_ended_s <= 0.1);
+                first_ended_s = -1.0;
+                ++seconds;
+            }
+            if (e.type != FighterEvent::Type::strike) continue;
+            const Combination& combination = combinations()[std::size_t(e.combination)];
+            const CombinationBlow& asked = combination.blows[std::size_t(e.blow)];
+            INFO(name << ": " << combination.name << " blow " << e.blow + 1);
+            CHECK(e.combination == strikes / 2);
+            CHECK(e.blow == strikes % 2);
+            CHECK(db.clips[e.clip].strike_kind() == asked.kind);
+            CHECK(static_cast<Side>(db.clips[e.clip].side) == asked.side);
+            if (asked.height == StrikeHeight::middle) CHECK((e.target_part == TargetPart::chest || e.target_part == TargetPart::solar_plexus));
+            if (asked.height == StrikeHeight::high && reaches_head) CHECK(e.target_part == TargetPart::head); // a kid's arms do not reach it
+            ++strikes;
+        }
+        CHECK(strikes == 6);
+        CHECK(seconds == 3);
+    }
+}
+
+TEST_CASE("fighter: a combination whose first blow is refused does not throw its second", "[runtime][corpus]") {
+    const MotionDatabaseContent* content = kumite::test::reference_database();
+    if (!content) return;
+    const MotionDatabaseView db = content->view();
+    OrderBout bout(db, "brawler");
+    const int punch = bout.retriever->semantics_id("punch");
+    // The first blow's orders: one waiting (queued behind a strike) that a later order replaces, its follow-up with it.
+    bout.run({{punch, Side::right, StrikeKind::straight, StrikeHeight::high, -1, 0, false}});
+    bout.events.clear();
+    SimulatedUser user(SimulatedKind::still, 3);
+    int expired_follow_ups = 0, strikes = 0;
+    for (int frame = 0; frame < 5 * 60; ++frame) {
+        const double t = 20.0 + frame / 60.0;
+        if (frame == 0) bout.fighter->order({punch, Side::right, StrikeKind::straight, StrikeHeight::high, -1, 0, false});
+        if (frame == 1) { // while it strikes: a combination waits, then an order takes its first blow's place
+            bout.fighter->order({punch, Side::right, StrikeKind::straight, StrikeHeight::high, 0, 0, false});
+            bout.fighter->order({punch, Side::left, StrikeKind::straight, StrikeHeight::high, 0, 1, false});
+            bout.fighter->order({punch, Side::left, StrikeKind::straight, StrikeHeight::high, -1, 0, false});
+        }
+        const Eigen::Vector3d head = user.head(t);
+        bout.fighter->step(t, &head);
+        for (const FighterEvent& e : bout.fighter->events()) {
+            expired_follow_ups += e.type == FighterEvent::Type::order_expired && e.blow == 1;
+            strikes += e.type == FighterEvent::Type::strike;
+            if (e.type == FighterEvent::Type::strike) CHECK(e.combination < 0);
+        }
+        bout.fighter->clear_events();
+    }
+    CHECK(expired_follow_ups == 1);
+    CHECK(strikes == 2); // the first order's and the one that took the combination's place
 }

@@ -27,7 +27,13 @@ TEST_CASE("supervisor: command lines are parsed, bad ones explained", "[runtime]
     CHECK(supervisor_command_parse("quit")->verb == SupervisorCommand::Verb::quit);
     CHECK(supervisor_command_parse("aim predicted")->verb == SupervisorCommand::Verb::aim);
     CHECK(supervisor_command_parse("aim latched")->argument == "latched");
-    for (const char* bad : {"", "punch up", "kick left now", "kick left high front middle", "character", "quit now", "dance", "aim", "aim ahead"}) {
+    CHECK(supervisor_command_parse("combo jab-body-head")->verb == SupervisorCommand::Verb::combo);
+    CHECK(supervisor_command_parse("combo one-two")->argument == "one-two");
+    const Result<SupervisorCommand> unknown_combination = supervisor_command_parse("combo one-two-three");
+    REQUIRE_FALSE(unknown_combination.has_value());
+    CHECK_THAT(unknown_combination.error().message, Catch::Contains("jab-hook")); // names the ones there are
+    for (const char* bad : {"", "punch up", "kick left now", "kick left high front middle", "character", "quit now", "dance", "aim", "aim ahead",
+                            "combo", "combo one-two now"}) {
         INFO(bad);
         const Result<SupervisorCommand> parsed = supervisor_command_parse(bad);
         REQUIRE_FALSE(parsed.has_value());

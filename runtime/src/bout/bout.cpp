@@ -1,5 +1,8 @@
 #include "kumite/runtime/bout.h"
 
+#include "bout/own_attacks.h"
+#include "kumite/runtime/combinations.h"
+
 #include <algorithm>
 #include <cmath>
 #include <chrono>
@@ -63,6 +66,15 @@ Result<std::unique_ptr<Bout>> Bout::create(const MotionDatabaseView& database, s
     bout->m_planning = std::make_unique<PlanningBudget>(options.plans_per_frame, bout->m_fighters.size());
     bout->m_queued.reserve(16);
     bout->m_motion = std::make_unique<MotionMeter>(options.fighters);
+    std::array<bool, 3> servable{}; // the combinations whose every blow the database has
+    for (std::size_t c = 0; c < combinations().size() && c < servable.size(); ++c) {
+        servable[c] = true;
+        for (const CombinationBlow& b : combinations()[c].blows) {
+            const int semantics = bout->m_retriever->semantics_id(b.semantics);
+            servable[c] = servable[c] && semantics >= 0 && bout->m_retriever->candidate_count(semantics, b.side, b.kind, b.height) > 0;
+        }
+    }
+    bout->m_own_attacks = std::make_unique<OwnAttacks>(options.attacks, options.attack_seed, servable);
     if (options.record) {
         const Character& start = *bout->m_characters[options.start_character];
         bout->m_record_decoder = std::make_unique<MirDecoder>(start.file.clip.skeleton, start.anatomy, std::span<const std::string>{});
@@ -107,7 +119,7 @@ Result<void> Bout::command(std::string_view line) {
     return {};
 }
 
-void Bout::apply(std::string_view line, const std::string& where) {
+void Bout::apply(std::string_view line, const std::string& where, bool own) {
     Result<SupervisorCommand> command = supervisor_command_parse(line);
     if (command && command->verb == SupervisorCommand::Verb::character && fighter_character_of(command->argument) < 0) {
         command = make_error(ErrorCode::invalid, "unknown character '" + command->argument + "'");
@@ -127,8 +139,23 @@ void Bout::apply(std::string_view line, const std::string& where) {
         order.kind = command->kind;
         order.height = command->height;
         order.semantics = m_retriever->semantics_id(command->semantics());
+        order.own = own;
         m_tracker->on_order(m_now_s);
         for (auto& fighter : m_fighters) fighter->order(order);
+        break;
+    }
+    case SupervisorCommand::Verb::combo: {
+        // Its blows in turn; a later one only after the one before it was accepted.
+        const int index = combination_index(command->argument);
+        const Combination& combination = combinations()[std::size_t(index)];
+        m_tracker->on_order(m_now_s);
+        for (auto& fighter : m_fighters) {
+            for (int blow = 0; blow < int(combination.blows.size()); ++blow) {
+                const CombinationBlow& b = combination.blows[std::size_t(blow)];
+                const StrikeOrder order{m_retriever->semantics_id(b.semantics), b.side, b.kind, b.height, index, blow, own};
+                if (!fighter->order(order)) break;
+            }
+        }
         break;
     }
     case SupervisorCommand::Verb::character: {
@@ -188,6 +215,10 @@ void Bout::apply_commands(double t_s) {
     if (m_stream) m_stream->poll([&](std::string_view line) { apply(line, ""); });
     for (const std::string& line : m_queued) apply(line, "");
     m_queued.clear();
+    // The fighter's own attack, when one is due and it is free: no order waiting, resting or stepping.
+    const Fighter& first = *m_fighters.front();
+    const bool free = !first.has_waiting_order() && (first.state() == FighterState::rest || first.state() == FighterState::approach) && m_have_head;
+    if (const std::string& attack = m_own_attacks->due(t_s, free); !attack.empty()) apply(attack, "", true);
 }
 
 void Bout::take_events(std::size_t fighter_index, Fighter& fighter) {

@@ -12,11 +12,13 @@ void BoutCounters::tally(const FighterEvent& event, long long frame, const Motio
     switch (event.type) {
     case FighterEvent::Type::order:
         ++orders;
+        own_attacks += event.own && event.blow == 0;
         fighter.order_frame = frame;
         break;
     case FighterEvent::Type::ignored_order: ++ignored_orders; break;
     case FighterEvent::Type::order_queued:
         ++orders;
+        own_attacks += event.own && event.blow == 0;
         ++orders_queued;
         break;
     case FighterEvent::Type::order_performed: ++orders_performed; break;
@@ -34,6 +36,10 @@ void BoutCounters::tally(const FighterEvent& event, long long frame, const Motio
         blocked_by_user += event.user_block != GuardPart::none;
         last_contact_error_m = event.contact_error_m;
         last_hit = event.hit;
+        if (event.combination >= 0 && event.combination < int(combination_strikes.size()) && event.blow >= 0 && event.blow < 2) {
+            ++combination_strikes[std::size_t(event.combination)][std::size_t(event.blow)];
+            combination_hits[std::size_t(event.combination)][std::size_t(event.blow)] += event.hit;
+        }
         contact_speed_mps.add(event.effector_speed_mps);
         if (event.clip >= 0 && event.clip < static_cast<int>(database.clips.size())) {
             const int segment = database.clips[event.clip].segment;

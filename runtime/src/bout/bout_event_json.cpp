@@ -2,6 +2,8 @@
 
 #include "kumite/runtime/bout_event_json.h"
 
+#include "kumite/runtime/combinations.h"
+
 #include <nlohmann/json.hpp>
 
 namespace kumite {
@@ -12,6 +14,15 @@ const char* side_text(Side side) { return side == Side::left ? "left" : side == 
 // An order's kind or height: "any" when it named none.
 const char* label_text(const char* name) { return std::string_view(name) == "none" ? "any" : name; }
 nlohmann::json xyz(const Eigen::Vector3d& point) { return {point.x(), point.y(), point.z()}; }
+
+// An order's combination and blow, and whether the fighter chose it, where they apply.
+void add_order_origin(nlohmann::json& line, const FighterEvent& event) {
+    if (event.combination >= 0 && event.combination < int(combinations().size())) {
+        line["combination"] = combinations()[std::size_t(event.combination)].name;
+        line["blow"] = event.blow + 1;
+    }
+    if (event.own) line["own"] = true;
+}
 
 nlohmann::json event_object(const Bout& bout, const BoutEvent& bout_event) {
 
@@ -30,6 +41,7 @@ nlohmann::json event_object(const Bout& bout, const BoutEvent& bout_event) {
         line["height"] = label_text(strike_height_name(event.height));
         if (event.type == FighterEvent::Type::order_performed || event.type == FighterEvent::Type::order_expired) line["waited_s"] = event.waited_s;
         if (event.type == FighterEvent::Type::order_expired) line["why"] = event.why;
+        add_order_origin(line, event);
         break;
     case FighterEvent::Type::ignored_order:
         line["why"] = event.why;
@@ -37,6 +49,7 @@ nlohmann::json event_object(const Bout& bout, const BoutEvent& bout_event) {
         line["side"] = side_text(event.side);
         line["kind"] = label_text(strike_kind_name(event.kind));
         line["height"] = label_text(strike_height_name(event.height));
+        add_order_origin(line, event);
         break;
     case FighterEvent::Type::state: line["state"] = fighter_state_name(event.state); break;
     case FighterEvent::Type::strike:
@@ -65,6 +78,7 @@ nlohmann::json event_object(const Bout& bout, const BoutEvent& bout_event) {
         line["speedup"] = event.speedup;
         line["target_part"] = target_part_name(event.target_part);
         line["reachable"] = event.reachable;
+        add_order_origin(line, event);
         break;
     case FighterEvent::Type::user_response: {
         // The blow as its strike event told it, then the user's answer.
@@ -77,6 +91,7 @@ nlohmann::json event_object(const Bout& bout, const BoutEvent& bout_event) {
         line["target_part"] = target_part_name(event.target_part);
         line["result"] = event.user_block != GuardPart::none ? "blocked" : event.hit ? "hit" : "miss";
         if (event.user_block != GuardPart::none) line["blocked_by"] = guard_part_name(event.user_block);
+        add_order_origin(line, event);
         line["began_s"] = r.began_s;
         line["visible_s"] = r.visible_s >= 0.0 ? nlohmann::json(r.visible_s) : nlohmann::json(nullptr);
         line["contact_s"] = r.contact_s;

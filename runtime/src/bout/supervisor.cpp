@@ -1,5 +1,7 @@
 #include "kumite/runtime/supervisor.h"
 
+#include "kumite/runtime/combinations.h"
+
 #include <algorithm>
 #include <arpa/inet.h>
 #include <cmath>
@@ -96,11 +98,17 @@ Result<SupervisorCommand> supervisor_command_parse(std::string_view line) {
         if (argument != "on" && argument != "off") return make_error(ErrorCode::invalid, "defence must be on or off, not '" + std::string(argument) + "'");
         command.verb = SupervisorCommand::Verb::defence;
         command.argument = argument;
+    } else if (verb == "combo") {
+        if (combination_index(argument) < 0) {
+            return make_error(ErrorCode::invalid, "combo takes " + std::string(combination_names()) + ", not '" + std::string(argument) + "'");
+        }
+        command.verb = SupervisorCommand::Verb::combo;
+        command.argument = argument;
     } else if (verb == "quit") {
         if (!argument.empty()) return make_error(ErrorCode::invalid, "quit takes nothing");
         command.verb = SupervisorCommand::Verb::quit;
     } else {
-        return make_error(ErrorCode::invalid, "unknown command '" + std::string(verb) + "' (punch, kick, slash, character, aim, defence, quit)");
+        return make_error(ErrorCode::invalid, "unknown command '" + std::string(verb) + "' (punch, kick, slash, knee, elbow, combo, character, aim, defence, quit)");
     }
     return command;
 }

@@ -26,6 +26,9 @@ public:
         event.side = order.side;
         event.kind = order.kind;
         event.height = order.height;
+        event.combination = order.combination;
+        event.blow = order.blow;
+        event.own = order.own;
         return event;
     }
     // An event of `type` at `t_s` with nothing else (tracker lost or back, ...).

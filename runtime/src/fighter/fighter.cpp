@@ -129,7 +129,8 @@ void Fighter::serve_orders(double t_s) {
 
 void Fighter::plan(double t_s) {
     Parts& p = *m_parts;
-    const bool free = m_state == FighterState::rest || m_state == FighterState::approach;
+    const bool follow_up = m_state == FighterState::recover && p.orders.has_pending() && p.orders.pending().order.blow > 0;
+    const bool free = m_state == FighterState::rest || m_state == FighterState::approach || follow_up;
     if (!p.orders.has_pending() || !free || p.defence.active() || !p.planner.may_plan()) return;
     switch (p.planner.plan(t_s, m_settings.aim, m_state == FighterState::approach, p.orders, p.body, p.user, p.footwork, p.strike)) {
     case StrikePlanner::Outcome::waiting: break;
@@ -172,7 +173,9 @@ void Fighter::play_strike(double t_s) {
     if (!p.strike.over() && !followed_through) return;
     p.strike.end(t_s, p.log);
     enter(FighterState::recover, t_s);
-    if (m_settings.step_out_after_strikes && p.user.tracking() && !p.orders.has_pending() && !p.orders.has_queued()) {
+    // A combination's next blow begins from here, the recoil (planned next frame), not from the guard.
+    const bool follow_up = p.orders.take_follow_up(t_s, p.user.head());
+    if (!follow_up && m_settings.step_out_after_strikes && p.user.tracking() && !p.orders.has_pending() && !p.orders.has_queued()) {
         // Out after: a strike that leaves the fighter inside the fighting distance recovers stepping back out.
         const Footwork::UserRange range = Footwork::range_of(p.body, p.user);
         const Footwork::Band band = p.footwork.rest_band(p.body, p.user);
@@ -295,7 +298,7 @@ void Fighter::set_defence(bool enabled) { m_parts->defence.defence().settings().
 bool Fighter::defence_enabled() const { return m_parts->defence.defence().enabled(); }
 const Defence& Fighter::defence() const { return m_parts->defence.defence(); }
 const UserGuard& Fighter::user_guard() const { return m_parts->user.guard(); }
-bool Fighter::has_waiting_order() const { return m_parts->orders.has_pending() || m_parts->orders.has_queued(); }
+bool Fighter::has_waiting_order() const { return m_parts->orders.has_pending() || m_parts->orders.has_queued() || m_parts->orders.has_follow_up(); }
 
 bool Fighter::wants_to_plan() const {
     // As step() decides, from the state before it: a queued order becomes pending in the step when the fighter is

@@ -1,7 +1,9 @@
 #pragma once
 // The supervisor's orders (fighter.h): one pending (taken, the strike not begun yet) and one queued (waiting while
 // the fighter is busy); refused when the database cannot serve them, expired when they wait too long or a later one
-// takes their place. Every order ends once: performed, refused or expired. Owns: the pending and the queued order,
+// takes their place. A combination's later blow waits beside them, for the end of the blow before it (taken then,
+// from its recoil), and ends with it when that one is refused or expires. Every order ends once: performed, refused
+// or expired. Owns: the pending and the queued order,
 // when each came, the head at the pending order (latched aim), how far the look for reach has got. Touches: the
 // event log (order events). Reads: the retriever (which strikes exist); the fighter tells it whether it is busy.
 
@@ -35,6 +37,9 @@ public:
 
     bool has_pending() const { return m_has_pending; }
     bool has_queued() const { return m_has_queued; }
+    bool has_follow_up() const { return m_has_follow_up; }
+    // The blow before the follow-up has ended: the follow-up becomes the pending order (true), from the recoil.
+    bool take_follow_up(double now_s, const Eigen::Vector3d& head);
     const PendingOrder& pending() const { return m_pending; }
     double queued_since_s() const { return m_queued_since_s; }
     // The pending order's strike began (order_performed) or it cannot be carried out (ignored_order, with why).
@@ -49,6 +54,8 @@ public:
 private:
     bool fits(const StrikeOrder& order, const char*& why) const;
     void take(const StrikeOrder& order, double now_s, const Eigen::Vector3d& head);
+    // The follow-up of the order that ended (its first blow) ends with it.
+    void end_follow_up(bool of_queued, double now_s, const char* why, EventLog& log);
     static void emit(FighterEvent::Type type, const StrikeOrder& order, double now_s, double since_s, EventLog& log, const char* why = "");
 
     const Retriever& m_retriever;
@@ -58,6 +65,10 @@ private:
     bool m_has_queued = false;
     StrikeOrder m_queued;
     double m_queued_since_s = 0.0;
+    bool m_has_follow_up = false;
+    bool m_follow_up_of_queued = false; // its blow before is the queued order (else the pending one, or under way)
+    StrikeOrder m_follow_up;
+    double m_follow_up_since_s = 0.0;
 };
 
 } // namespace kumite

@@ -15,6 +15,10 @@ inline constexpr int k_target_part_count = 4;
 // The points a strike may aim at, highest first.
 inline constexpr TargetPart k_target_parts[k_target_part_count] = {TargetPart::head, TargetPart::chin, TargetPart::chest, TargetPart::solar_plexus};
 
+// The first part an order of `height` aims at (an index of k_target_parts): high or any, the head; middle, the
+// chest; low, the solar plexus. Lower parts are looked at after it when it is out of reach or covered.
+inline int first_target_part(StrikeHeight height) { return height == StrikeHeight::middle ? 2 : height == StrikeHeight::low ? 3 : 0; }
+
 // How far under the user's head the target part `part` (an index of k_target_parts) is: 0.10, 0.30 and 0.45 m under
 // a 1.65 m head, scaled by the user's size (head height / 1.65 m).
 double drop_under_head_m(int part, const Eigen::Vector3d& head);

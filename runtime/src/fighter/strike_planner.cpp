@@ -30,7 +30,9 @@ StrikePlanner::Outcome StrikePlanner::plan(double t_s, FighterAim aim, bool appr
     const UserGuard& guard = user.guard();
     const bool openings = guard.settings().enabled && guard.settings().aim_at_openings && pending.order.height == StrikeHeight::none &&
                           user.tracking() && (user.hands().present[0] || user.hands().present[1]);
-    const int parts = m_reach_fallback || openings ? k_target_part_count : 1;
+    // From the part its height names (the head, unless it asked for the body) down.
+    const int top = first_target_part(pending.order.height);
+    const int parts = m_reach_fallback || openings ? k_target_part_count : top + 1;
     // An order may wait a little: for reach (the approach goes on meanwhile), and with predicted aim while the user
     // is changing course (just turned, stopped or started: the extrapolation would be wrong).
     const bool waiting_allowed = t_s - pending.since_s < m_wait_for_reach_s;
@@ -73,7 +75,8 @@ StrikePlanner::Outcome StrikePlanner::plan(double t_s, FighterAim aim, bool appr
     if (found.found && !reachable) {
         // Nothing reaches. When stepping in can help (a step is under way, or the user is beyond the band and the
         // database has a step forward), the fighter steps in first and strikes when in reach; otherwise, or when
-        // that takes too long, it strikes at the head as the paper's fighter does.
+        // that takes too long, it strikes at the part its height names (the head unless asked for the body), as the
+        // paper's fighter strikes at the head.
         const int step = footwork.step_forward_clip();
         const double distance = user.distance_from(body.heading().origin);
         // (A short strike — an elbow, a knee — may not reach from inside the band either: closer helps while the
@@ -91,11 +94,11 @@ StrikePlanner::Outcome StrikePlanner::plan(double t_s, FighterAim aim, bool appr
         // the wait.
         const bool step_may_finish = approaching && t_s - pending.since_s < 2.0 * m_wait_for_reach_s;
         if ((waiting_allowed || step_may_finish) && closer_helps && (in_time || user_may_come || step_may_finish)) {
-            orders.wait_for_reach(last % parts);
+            orders.wait_for_reach(last < parts ? last : top);
             return Outcome::waiting;
         }
-        part = 0;
-        found = retrieve(query, aim_offset(0, user.head(), body.heading().origin, m_surface_depth_m), aim, pending, user, target);
+        part = top;
+        found = retrieve(query, aim_offset(top, user.head(), body.heading().origin, m_surface_depth_m), aim, pending, user, target);
         strike.try_plan(found, target, body.mir(), body);
     }
     if (!found.found) return Outcome::refused;

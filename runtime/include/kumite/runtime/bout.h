@@ -7,6 +7,7 @@
 
 #include "kumite/core/skinned_mesh.h"
 #include "kumite/formats/bvh_reader.h"
+#include "kumite/runtime/attack_settings.h"
 #include "kumite/runtime/bout_counters.h"
 #include "kumite/runtime/fighter.h"
 #include "kumite/runtime/head_tracker.h"
@@ -22,6 +23,9 @@
 #include <vector>
 
 namespace kumite {
+
+class OwnAttacks;
+
 
 struct BoutCharacter {
     std::string name;
@@ -41,6 +45,8 @@ struct BoutOptions {
     // 0: no limit. A plan (one retrieval, the adaptation's set-up) costs about half a millisecond: 14 keep a frame
     // of 200 fighters under 11 ms, and 200 fighters ordered at once are all served within 15 frames (250 ms).
     int plans_per_frame = 14;
+    AttackSettings attacks;          // the fighter's own attacks (free sparring), off by default
+    std::uint64_t attack_seed = 1;   // their random stream
     FighterSettings fighter;
 };
 
@@ -104,7 +110,7 @@ private:
     Bout() = default;
     struct Character;
     int fighter_character_of(const std::string& name) const;
-    void apply(std::string_view line, const std::string& where);
+    void apply(std::string_view line, const std::string& where, bool own = false); // own: the fighter's own attack
     void tell(std::string_view message); // to the stream, else the message handler
     // The frame's parts, in the order step() calls them.
     void take_head(double t_s);
@@ -130,6 +136,7 @@ private:
     std::vector<FighterTally> m_tallies; // what the counters remember of each fighter between its events
     BoutCounters m_counters;
     std::unique_ptr<MotionMeter> m_motion;
+    std::unique_ptr<OwnAttacks> m_own_attacks;
     bool m_quit = false;
     bool m_have_head = false;
     Eigen::Vector3d m_head = Eigen::Vector3d::Zero();

@@ -31,6 +31,9 @@ struct FighterEvent {
     Side side = Side::none;
     StrikeKind kind = StrikeKind::none;      // order and strike events: what the order asked for (none: any)
     StrikeHeight height = StrikeHeight::none;
+    int combination = -1;                    // order, strike and user_response events: the order's combination (-1 none)
+    int blow = 0;                            // ... and which blow of it
+    bool own = false;                        // ... the fighter's own attack, not an order
     bool varied = false;                     // strike events: not the best clip, to vary from the last strikes
     int clip = -1;                           // strike events
     bool hit = false;

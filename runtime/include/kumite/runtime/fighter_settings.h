@@ -33,6 +33,9 @@ struct StrikeOrder {
     Side side = Side::none;
     StrikeKind kind = StrikeKind::none;
     StrikeHeight height = StrikeHeight::none;
+    int combination = -1; // a blow of this combination (combinations()), else -1
+    int blow = 0;         // which: 0 the first; a later one begins as the one before it ends, from its recoil
+    bool own = false;     // the fighter's own attack (BoutOptions::attacks), not the supervisor's order
 };
 
 struct FighterSettings {
