@@ -82,7 +82,6 @@ std::array<double, 4> SpeedLimit::limb_ratios(const LimbSample& sample, const Li
         const double travel = (sample.extremity[k] - m_last_sample.extremity[k]).norm() / dt_s;
         const double bend = std::abs(sample.flexion_rad[k] - m_last_sample.flexion_rad[k]) / dt_s;
         ratios[k] = std::max(ratio(travel, arm ? bar.wrist_mps : bar.ankle_mps), ratio(bend, arm ? bar.elbow_radps : bar.knee_radps));
-        if (arm) ratios[k] = std::max(ratios[k], ratio((sample.elbow[k] - m_last_sample.elbow[k]).norm() / dt_s, bar.elbow_mps));
     }
     return ratios;
 }

@@ -1,6 +1,6 @@
 #pragma once
 // The last word on the pose shown (fighter.h): no wrist, ankle, elbow or knee of the fighter moves (an elbow or knee
-// bends; an elbow also travels) faster than the library's fastest for the kind of move the frame is (speed_bar), and no wrist
+// bends) faster than the library's fastest for the kind of move the frame is (speed_bar), and no wrist
 // or ankle faster than a person's (k_human_extremity_mps). A limb that would is shown only part of the way from the
 // last pose shown — its joints' local rotations slerped by the share that keeps its wrist or ankle and its elbow or
 // knee at their bars — the trunk and the other limbs as asked; when the trunk itself carries a limb too fast (a

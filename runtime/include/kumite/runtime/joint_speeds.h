@@ -4,7 +4,8 @@
 // forearm's twist is not counted: the decoder's twist follows the hand's frame and is no joint speed a person could
 // be measured at), and the fastest elbow's own travel (m/s, world: its swing about the shoulder, which the bend does
 // not see). The fighter's are measured every frame (motion_meter.h); the library's are those of the database's clips
-// played on a character, the bar a fighter must stay under (the speed limit holds every one of them to it).
+// played on a character, the bar a fighter must stay under (the speed limit holds wrists, ankles and the bends to it;
+// the elbow's travel is measured and reported against its bar, not held: see docs/design.md).
 
 #include "kumite/core/character_rig.h"
 #include "kumite/core/motion_database.h"
