@@ -151,6 +151,9 @@ MirDecoder::MirDecoder(const Skeleton& skeleton, const RestAnatomy& anatomy, std
     m_chain_index.assign(joints, 0);
     m_rest_frames_inverse.resize(joints);
     for (int joint = 0; joint < joints; ++joint) m_rest_frames_inverse[joint] = anatomy.rest_frames[joint].conjugate();
+    // Captures carry no fingers: the body's fingers close into fists rather than hold their bind pose's open hands.
+    if (anatomy.fist_local_rotations.size() == std::size_t(joints)) m_undriven_local_rotations = anatomy.fist_local_rotations;
+    else m_undriven_local_rotations.assign(joints, Eigen::Quaterniond::Identity());
     for (int k = 1; k + 1 < anatomy.spine.count; ++k) {
         m_roles[anatomy.spine.joints[k]] = Role::spine;
         m_chain_index[anatomy.spine.joints[k]] = k;
@@ -282,7 +285,7 @@ void MirDecoder::decode(Pose& pose, const MirFrame& frame, const LimbPins& pins)
         case Role::other: {
             const int source = m_source_joint[joint];
             const bool known = source >= 0 && source < static_cast<int>(frame.source_local_rotations.size());
-            m_rotations[joint] = known ? parent_rotation * frame.source_local_rotations[source] : parent_rotation;
+            m_rotations[joint] = parent_rotation * (known ? frame.source_local_rotations[source] : m_undriven_local_rotations[joint]);
             break;
         }
         }

@@ -1,5 +1,6 @@
 #include "kumite/core/rest_anatomy.h"
 
+#include "kumite/core/fist_pose.h"
 #include "kumite/core/forward_kinematics.h"
 #include "kumite/core/standing_height.h"
 
@@ -200,6 +201,7 @@ Result<RestAnatomy> rest_anatomy_build(const Clip& clip, const BodyMap& map) {
     const FloorEstimate floor = floor_estimate(clip, map);
     anatomy.floor_y = floor.floor_y;
     anatomy.ankle_height = floor.ankle_height;
+    anatomy.fist_local_rotations = fist_local_rotations(skeleton, map, anatomy.rest_positions);
     return anatomy;
 }
 

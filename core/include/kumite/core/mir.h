@@ -75,7 +75,9 @@ public:
 
     // Writes the pose on the target skeleton: root translation, local rotations and, when the pelvis is not the
     // root, local translations. A foot that would pass below the floor (y = 0) is pitched about its ankle until
-    // its lowest point touches it. `pose` is sized on first use and reused.
+    // its lowest point touches it. Joints the MIR has no part for take the source's local rotation when it has a
+    // joint of their name, else the anatomy's fist for fingers (fist_pose.h) and identity for the rest. `pose` is
+    // sized on first use and reused.
     void decode(Pose& pose, const MirFrame& frame, const LimbPins& pins = {});
 
     // Model transforms of the last decoded pose.
@@ -98,6 +100,7 @@ private:
     std::vector<int> m_part_of;              // [joint] BodyPart index, or -1
     std::vector<int> m_chain_index;          // [joint] index in its trunk chain (spine/neck roles)
     std::vector<Eigen::Quaterniond> m_rest_frames_inverse; // [joint] conjugated anatomical rest frames
+    std::vector<Eigen::Quaterniond> m_undriven_local_rotations; // [joint] what a joint no source drives gets: fingers a fist
     std::vector<Eigen::Vector3d> m_positions;
     std::vector<Eigen::Quaterniond> m_rotations;
     std::vector<bool> m_solved;              // [joint] rotation set by a limb solve

@@ -1,7 +1,8 @@
 #pragma once
 // RestAnatomy: what the morphology-independent representation needs to know about one skeleton, computed once
 // from its rest pose (identity rotations) and body map: anatomical frames per part, limb and leg lengths, the
-// trunk chains, the hip centre and the ankle height.
+// trunk chains, the hip centre and the ankle height; and the fingers' fist, which the decoder gives fingers no
+// capture drives.
 //
 // An anatomical frame is a rotation whose columns are axes of a body part in the rest pose: for the pelvis the
 // hips' trunk frame [left, up, forward] (left from the right hip to the left one); for the spine and neck chains
@@ -49,6 +50,7 @@ struct RestAnatomy {
     std::vector<Eigen::Vector3d> rest_positions;                 // [joint] model positions, identity rotations
     std::vector<Eigen::Quaterniond> rest_frames;                 // [joint] anatomical frame (identity if none)
     std::vector<bool> has_frame;                                 // [joint] true for mapped parts and trunk chains
+    std::vector<Eigen::Quaterniond> fist_local_rotations;        // [joint] fingers closed (fist_pose.h), identity elsewhere
     std::array<LimbChain, k_limb_count> limbs;
     TrunkChain spine;                                            // pelvis .. chest
     TrunkChain neck;                                             // chest .. head
