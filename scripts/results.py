@@ -455,7 +455,8 @@ def speed_section(opponents):
     return ["## Human speed", "",
             "The fighter's fastest joints in each kind of move over every bout against the recorded people, and in brackets "
             f"the library's fastest for that kind (the bar the speed limit holds it to, on the {character}): wrists and ankles "
-            "in m/s, elbow and knee bend rates in rad/s, the elbow's own travel (its swing about the shoulder) in m/s; the largest ratio of any joint to its bar, and the bouts where one "
+            "in m/s, elbow and knee bend rates in rad/s, the elbow's own travel (its swing about the shoulder) in m/s, measured "
+            "and not held yet (docs/design.md); the largest ratio of any joint to its bar, and the bouts where one "
             "went over it by more than 0.1%.", "",
             table(["move", "wrist", "ankle", "elbow bend", "elbow travel", "knee", "most over the library's", "bouts over"], rows), ""]
 
