@@ -27,15 +27,15 @@ fi
 "$root/scripts/build.sh" "${launcher[@]}" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG"
 
 # The fuzz targets, when Clang and libFuzzer are there: every seed, then 30 s on the BVH reader, 15 s on the
-# database opener, 10 s on the DTrack parser and 15 s on the glTF reader (longer runs: the KUMITE_*_FUZZ_SECONDS
-# variables, or tests/fuzz/README.md).
+# database opener, 10 s on the DTrack parser, 15 s on the glTF reader and 10 s on the drill reader (longer runs: the
+# KUMITE_*_FUZZ_SECONDS variables, or tests/fuzz/README.md).
 if command -v clang++-14 >/dev/null && [[ "${KUMITE_SKIP_FUZZ:-}" != "1" ]]; then
   # -O1 and line tables only (libFuzzer's own advice): a stack trace with lines, less to compile than -O2 -g.
   fuzz_generator=()
   if command -v ninja >/dev/null && [[ ! -f "$root/build/fuzz/CMakeCache.txt" ]]; then fuzz_generator=(-G Ninja); fi
   cmake -S "$root" -B "$root/build/fuzz" "${fuzz_generator[@]}" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=Release \
     -DCMAKE_CXX_FLAGS_RELEASE="-O1 -gline-tables-only" "${launcher[@]}" -DKUMITE_BUILD_TESTS=OFF -DKUMITE_BUILD_FUZZERS=ON >/dev/null
-  cmake --build "$root/build/fuzz" --target bvh_reader_fuzz database_fuzz dtrack_fuzz gltf_fuzz -j"$(nproc)"
+  cmake --build "$root/build/fuzz" --target bvh_reader_fuzz database_fuzz dtrack_fuzz gltf_fuzz drill_fuzz -j"$(nproc)"
   work="$(mktemp -d)"
   trap 'rm -rf "$work"' EXIT
   run_fuzzer() { # NAME SEED_FOLDER SECONDS [EXTRA...]
@@ -51,6 +51,7 @@ if command -v clang++-14 >/dev/null && [[ "${KUMITE_SKIP_FUZZ:-}" != "1" ]]; the
   run_fuzzer database_fuzz "$root/tests/fuzz/database_corpus" "${KUMITE_DATABASE_FUZZ_SECONDS:-15}"
   run_fuzzer dtrack_fuzz "$root/tests/fuzz/dtrack_corpus" "${KUMITE_DTRACK_FUZZ_SECONDS:-10}"
   run_fuzzer gltf_fuzz "$root/tests/fuzz/gltf_corpus" "${KUMITE_GLTF_FUZZ_SECONDS:-15}"
+  run_fuzzer drill_fuzz "$root/tests/fuzz/drill_corpus" "${KUMITE_DRILL_FUZZ_SECONDS:-10}"
 fi
 
 [[ ${#launcher[@]} -gt 0 ]] && ccache --show-stats 2>/dev/null | grep -iE "hits|misses" | head -n 3 || true
