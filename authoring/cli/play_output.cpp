@@ -132,7 +132,7 @@ nlohmann::json play_report_json(const Bout& bout) {
     }
     // Each combination's blows: thrown and landed, the first (it draws the guard) and the second (where it left).
     nlohmann::json by_combination = nlohmann::json::object();
-    for (std::size_t c = 0; c < combinations().size() && c < counters.combination_strikes.size(); ++c) {
+    for (std::size_t c = 0; c < k_combination_count; ++c) {
         const auto& thrown = counters.combination_strikes[c];
         const auto& landed = counters.combination_hits[c];
         if (thrown[0] + thrown[1] == 0) continue;

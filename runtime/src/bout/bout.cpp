@@ -66,8 +66,8 @@ Result<std::unique_ptr<Bout>> Bout::create(const MotionDatabaseView& database, s
     bout->m_planning = std::make_unique<PlanningBudget>(options.plans_per_frame, bout->m_fighters.size());
     bout->m_queued.reserve(16);
     bout->m_motion = std::make_unique<MotionMeter>(options.fighters);
-    std::array<bool, 3> servable{}; // the combinations whose every blow the database has
-    for (std::size_t c = 0; c < combinations().size() && c < servable.size(); ++c) {
+    std::array<bool, k_combination_count> servable{}; // the combinations whose every blow the database has
+    for (std::size_t c = 0; c < k_combination_count; ++c) {
         servable[c] = true;
         for (const CombinationBlow& b : combinations()[c].blows) {
             const int semantics = bout->m_retriever->semantics_id(b.semantics);

@@ -6,7 +6,7 @@
 namespace kumite {
 namespace {
 
-constexpr std::array<Combination, 3> k_combinations{{
+constexpr std::array<Combination, k_combination_count> k_combinations{{
     {"one-two",
      {{{"punch", Side::right, StrikeKind::straight, StrikeHeight::high}, {"punch", Side::left, StrikeKind::straight, StrikeHeight::high}}},
      "the jab (the lead hand's straight), then the cross (the rear hand's), at the head"},

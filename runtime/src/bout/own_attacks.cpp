@@ -8,7 +8,7 @@
 
 namespace kumite {
 
-OwnAttacks::OwnAttacks(const AttackSettings& settings, std::uint64_t seed, std::array<bool, 3> servable)
+OwnAttacks::OwnAttacks(const AttackSettings& settings, std::uint64_t seed, std::array<bool, k_combination_count> servable)
     : m_settings(settings), m_random{seed ^ 0x6f776e2d61747461ULL}, m_servable(servable) {
     for (const bool can : m_servable) m_servable_count += can;
     m_line.reserve(32);

@@ -8,6 +8,7 @@
 
 #include "kumite/core/split_mix.h"
 #include "kumite/runtime/attack_settings.h"
+#include "kumite/runtime/combinations.h"
 
 #include <array>
 #include <cstdint>
@@ -17,7 +18,7 @@ namespace kumite {
 
 class OwnAttacks {
 public:
-    OwnAttacks(const AttackSettings& settings, std::uint64_t seed, std::array<bool, 3> servable);
+    OwnAttacks(const AttackSettings& settings, std::uint64_t seed, std::array<bool, k_combination_count> servable);
     // The supervisor line of the attack due at `t_s` ("punch", "kick", "combo one-two"), or empty: none is due, or
     // the fighter is not `free` (then it comes as soon as it is).
     const std::string& due(double t_s, bool free);
@@ -28,7 +29,7 @@ private:
     AttackSettings m_settings;
     SplitMix64 m_random;
     double m_next_s = -1.0; // < 0: not scheduled yet (the first frame schedules it)
-    std::array<bool, 3> m_servable{}; // the combinations (combinations()) whose every blow the database has
+    std::array<bool, k_combination_count> m_servable{}; // the combinations (combinations()) whose every blow the database has
     int m_servable_count = 0;
     std::string m_line;
 };

@@ -22,11 +22,8 @@ void CapturedBlockArm::measure_from_shown(const Defence& defence, const Defender
     if (m_measure_from_shown && defence.active()) {
         // A block started last frame, shown then at weight 0: its first step is measured from that pose.
         const int side = defence.block_arm();
-        m_last_wrist = defender.wrist[side] - defender.shoulder[side];
-        m_last_elbow = defender.elbow[side] - defender.shoulder[side];
+        m_last_shown = {defender.shoulder[side], defender.elbow[side], defender.wrist[side]};
         m_last_s = shown_s;
-        m_last_world = {defender.shoulder[side], defender.elbow[side], defender.wrist[side]};
-        m_last_world_s = shown_s;
     }
     m_measure_from_shown = false;
 }
@@ -132,7 +129,7 @@ void CapturedBlockArm::limit_speed(const Defence& defence, const LimbChain& chai
     double speed_ratio = defence.settings().block_clip_max_speed_ratio; // 0: no limit
     if (lagging || defence.move_strike_over() || defence.time_to_block_point() <= 0.0) speed_ratio = speed_ratio > 0.0 ? std::min(speed_ratio, 1.0) : 1.0;
     if (speed_ratio > 0.0 && m_last_s >= 0.0 && now_s > m_last_s) {
-        m_lagging = limit_arm_step(chain, reference, swivel, m_last_wrist, m_last_elbow, speed_ratio * m_choice.clip_arm_from_shoulder_mps * (now_s - m_last_s),
+        m_lagging = limit_arm_step(chain, reference, swivel, m_last_shown.wrist - m_last_shown.shoulder, m_last_shown.elbow - m_last_shown.shoulder, speed_ratio * m_choice.clip_arm_from_shoulder_mps * (now_s - m_last_s),
                                    wrist, bend);
     }
 }
@@ -140,19 +137,15 @@ void CapturedBlockArm::limit_speed(const Defence& defence, const LimbChain& chai
 void CapturedBlockArm::note_shown(Defence& defence, const ShownArm& arm, double now_s) {
     // The blocking arm's fastest move relative to its shoulder, for the block's event (no pop: measured against the
     // captured clip's own), and its wrist's and elbow's in the world (as the motion meter measures them).
-    const Eigen::Vector3d wrist = arm.wrist - arm.shoulder, elbow = arm.elbow - arm.shoulder;
     if (m_last_s >= 0.0 && now_s - m_last_s > 1e-6) {
         const double dt_s = now_s - m_last_s;
-        const double step = std::max((wrist - m_last_wrist).norm(), (elbow - m_last_elbow).norm());
-        const bool have_world = m_last_world_s == m_last_s; // the world's positions were noted with the same frame
-        defence.note_arm_speed(step / dt_s, have_world ? (arm.wrist - m_last_world.wrist).norm() / dt_s : 0.0,
-                               have_world ? (arm.elbow - m_last_world.elbow).norm() / dt_s : 0.0);
+        const ShownArm& last = m_last_shown;
+        const double step = std::max(((arm.wrist - arm.shoulder) - (last.wrist - last.shoulder)).norm(),
+                                     ((arm.elbow - arm.shoulder) - (last.elbow - last.shoulder)).norm());
+        defence.note_arm_speed(step / dt_s, (arm.wrist - last.wrist).norm() / dt_s, (arm.elbow - last.elbow).norm() / dt_s);
     }
-    m_last_wrist = wrist;
-    m_last_elbow = elbow;
+    m_last_shown = arm;
     m_last_s = now_s;
-    m_last_world = arm;
-    m_last_world_s = now_s;
 }
 
 } // namespace kumite

@@ -49,10 +49,8 @@ public:
 private:
     BlockClips m_clips;                   // the database's captured blocks
     BlockClipChoice m_choice;             // the one being played (block_clip moves)
-    Eigen::Vector3d m_last_wrist = Eigen::Vector3d::Zero(), m_last_elbow = Eigen::Vector3d::Zero(); // relative to the shoulder
     double m_last_s = -1.0;               // when they were measured; < 0: not yet in this block
-    ShownArm m_last_world;                // the same arm in the world
-    double m_last_world_s = -1.0;         // when
+    ShownArm m_last_shown;                // the blocking arm as shown then (world)
     bool m_measure_from_shown = false;    // a block started last frame: measured from the pose shown then
     bool m_lagging = false;               // the arm was held back to its clip's speed last frame: not where the blend put it
     double m_played = 0.0;                // clip frames of the captured block played since its start frame

@@ -5,6 +5,7 @@
 // stays flat; `by_clip` is sized once, at the bout's start.
 
 #include "kumite/core/motion_database.h"
+#include "kumite/runtime/combinations.h"
 #include "kumite/runtime/fighter_event.h"
 #include "kumite/runtime/value_histogram.h"
 
@@ -25,8 +26,8 @@ struct BoutCounters {
     long long orders = 0, strikes = 0, hits = 0, misses = 0, ignored_orders = 0;
     long long blocked_by_user = 0; // of the misses: met the user's glove or forearm first (user_guard.h)
     long long own_attacks = 0;     // orders the fighter gave itself (free sparring), of `orders`
-    // Combinations' strikes: [combination][blow] thrown and landed (combinations.h; three, of two blows).
-    std::array<std::array<long long, 2>, 3> combination_strikes{}, combination_hits{};
+    // Combinations' strikes: [combination][blow] thrown and landed (combinations.h).
+    std::array<std::array<long long, 2>, k_combination_count> combination_strikes{}, combination_hits{};
     long long orders_queued = 0, orders_performed = 0, orders_expired = 0; // how orders ended (ignored_orders: refused)
     // Summaries in fixed memory, so that a bout of hours stays flat.
     ValueHistogram frame_us{0.1, 1e7};          // every frame's cost

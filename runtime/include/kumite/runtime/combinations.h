@@ -6,6 +6,7 @@
 #include "kumite/core/strike_labels.h"
 
 #include <array>
+#include <cstddef>
 #include <span>
 #include <string_view>
 
@@ -24,6 +25,7 @@ struct Combination {
     const char* what; // for --help and the docs
 };
 
+inline constexpr std::size_t k_combination_count = 3;
 // one-two, jab-hook, jab-body-head.
 std::span<const Combination> combinations();
 // The index of the combination called `name` in combinations(), else -1.
