@@ -69,3 +69,22 @@ class Bout:
     def positions(self, fighter: int = 0) -> npt.NDArray[np.float64]: ...
     def world_transforms(self, fighter: int = 0) -> npt.NDArray[np.float64]: ...
     def _step_loop_us(self, start_s: float, frames: int, head: Sequence[float]) -> float: ...
+
+class Store:
+    """The training store (SQLite) that `kumite train` writes, read-only. Each table comes as a pandas DataFrame, or as a
+    dict of numpy arrays (column name -> array) when pandas is not installed: the columns of `kumite export`; flags
+    (complete, own, countered, defended) bool; integers int64; other numbers float64 with NaN for a missing value
+    (response_time_s of a blow not answered); text object (None for a missing value). Raises kumite.Error with the
+    store's message: a missing or damaged file, an unknown trainee (naming the ones there are) or session."""
+    def __init__(self, path: Optional[str] = None) -> None:
+        """path None: $KUMITE_STORE, else ~/.local/share/kumite/training.sqlite."""
+    @property
+    def path(self) -> str: ...
+    def trainees(self) -> Any:
+        """trainee_id, trainee, sessions, last_utc."""
+    def sessions(self, trainee: Optional[str] = None) -> Any:
+        """session_id, trainee, drill, ..., started_utc, duration_s, complete, attacks, user_strikes, ...; oldest first."""
+    def attacks(self, trainee: Optional[str] = None, session: Optional[int] = None) -> Any:
+        """session_id, trainee, seq, t_s, ..., command, kind, height, result, response, response_time_s (s), quality, ..."""
+    def user_strikes(self, trainee: Optional[str] = None, session: Optional[int] = None) -> Any:
+        """session_id, trainee, seq, t_s, ..., hand, outcome, defended, peak_speed_mps (m/s)."""

@@ -2,6 +2,7 @@
 // and bouts stepped from Python. Errors raise kumite.Error (a RuntimeError) with kumite's message (file:line for a
 // bad file). Arrays are float64, metres, Y up.
 
+#include "store_binding.h"
 #include "strike_reports.h"
 #include "strike_stage.h"
 
@@ -380,4 +381,7 @@ PYBIND11_MODULE(kumite, m) {
         .def("world_transforms", &bout_world_transforms, py::arg("fighter") = 0, "The fighter's joints' world matrices: (joints, 4, 4).")
         .def("_step_loop_us", &bout_step_loop_us, py::arg("start_s"), py::arg("frames"), py::arg("head"),
              "Benchmark baseline: steps `frames` frames in C++ feeding a still head; returns the microseconds taken.");
+
+    // The training store, read: kumite.Store (store_binding.cpp).
+    bind_store(m);
 }
