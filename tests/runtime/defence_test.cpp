@@ -468,3 +468,22 @@ TEST_CASE("defence: a block follows a fist that turns onto the head as it slows,
     CHECK(outcome(DefenceSettings{}.reaim_min_speed_mps) == UserStrikeOutcome::blocked);
     CHECK(outcome(2.5) == UserStrikeOutcome::hit_by_user); // followed only while over 2.5 m/s: the forearm stays beside
 }
+
+TEST_CASE("defence: with a reaction time, a hand that stopped short meanwhile gets no move (no hold of seconds)", "[runtime]") {
+    // The user's hand starts at the head at 4 m/s, stops 0.4 m short after 0.1 s, and drifts on at 3 cm/s: a glove
+    // held out. 0.2 s after it was seen it is no threat any more; a move then would be held until it "arrived" (11 s).
+    DefenceSettings settings;
+    settings.reaction_delay_s = 0.2;
+    Defence defence(settings);
+    const Eigen::Vector3d from(-0.1, 1.55, 0.8), head(0.0, 1.6, 0.0);
+    const Eigen::Vector3d way = (head - from).normalized();
+    const auto path = [&](double t) {
+        if (t <= 0.2) return from;
+        if (t <= 0.3) return Eigen::Vector3d(from + way * 4.0 * (t - 0.2));
+        return Eigen::Vector3d(from + way * (0.4 + 0.03 * (t - 0.3)));
+    };
+    bool ever_active = false;
+    run_hand(defence, 0, path, false, [&](double) { ever_active = ever_active || defence.active(); });
+    CHECK_FALSE(ever_active);
+    CHECK_FALSE(defence.active());
+}

@@ -60,7 +60,9 @@ void Defence::start_due_move(double t_s, Hand& hand, const DefenderBody& body, c
     if (speed < 1e-6) return;
     const Eigen::Vector3d to_part = (hand.strike.at_head ? body.head : body.chest) - hand.position;
     const double arrival = to_part.dot(hand.velocity) / (speed * speed);
-    if (arrival > 0.0) start_move(t_s, hand, body, arrival, allowed);
+    // Still coming, as a threat is (horizon_s): a hand that stopped short of the fighter meanwhile (a glove held
+    // out) would give the move a hold of seconds, and the fighter would take no order while it lasted.
+    if (arrival > 0.0 && arrival <= m_settings.horizon_s) start_move(t_s, hand, body, arrival, allowed);
 }
 
 void Defence::start_move(double t_s, Hand& hand, const DefenderBody& body, double time_to_impact, const Allowed& allowed) {
