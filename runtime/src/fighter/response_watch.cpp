@@ -80,7 +80,7 @@ void ResponseWatch::watch(double t_s, const Blow& blow, const TrackedUser& user,
     m_previous_head = user.head();
     m_previous_hands = user.hands();
     if (blow.striking) {
-        m_previous_point = blow.point;
+        m_previous_point_from_fighter = blow.point - blow.fighter;
         m_have_previous_point = true;
     }
 }
@@ -89,10 +89,11 @@ void ResponseWatch::follow(double t_s, double dt_s, Watched& watched, const Blow
     UserResponse& r = watched.response;
     const bool newest = &watched == &m_watched[std::size_t(std::max(0, m_newest))];
     if (newest && blow.striking && !watched.have_contact) {
-        // The blow's path as it comes, and the frame it becomes visible: closing on its target.
+        // The blow's path as it comes, and the frame it becomes visible: its striking part leaving the guard, moving
+        // on the fighter's body (in any direction: a hook's swing and a kick's chamber show before they close in).
         if (m_have_previous_point && r.visible_s < 0.0) {
-            const double closing = ((blow.point - m_previous_point) / dt_s).dot(unit_or_zero(blow.target - blow.point));
-            if (closing > m_settings.blow_visible_mps) r.visible_s = t_s;
+            const double speed = ((blow.point - blow.fighter - m_previous_point_from_fighter) / dt_s).norm();
+            if (speed > m_settings.blow_visible_mps) r.visible_s = t_s;
         }
         if (!watched.have_line || (blow.target - blow.point).norm() > k_line_from_target_m) watched.point = blow.point;
         else watched.line_final = true;

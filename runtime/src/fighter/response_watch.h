@@ -62,7 +62,7 @@ private:
     double m_previous_s = 0.0;
     Eigen::Vector3d m_previous_head = Eigen::Vector3d::Zero();
     UserHands m_previous_hands;
-    Eigen::Vector3d m_previous_point = Eigen::Vector3d::Zero();
+    Eigen::Vector3d m_previous_point_from_fighter = Eigen::Vector3d::Zero(); // the striking point, from the fighter's pelvis
     bool m_have_previous_point = false;
 };
 

@@ -3,8 +3,8 @@
 // visible, when and how the user first moved against it, whether in time, what became of it, and whether the user
 // struck back within a second.
 //
-// The blow becomes visible at the first frame its striking part (fist, foot, knee, elbow) closes on its target
-// faster than ResponseSettings::blow_visible_mps: the limb leaving the guard. From the strike's start on, the
+// The blow becomes visible at the first frame its striking part (fist, foot, knee, elbow) moves on the fighter's body
+// (from its pelvis) faster than ResponseSettings::blow_visible_mps, in any direction: the limb leaving the guard. From the strike's start on, the
 // user's first defensive motion is the first frame over a speed threshold (never earlier) of
 //   - the head moving back along the blow's line (head_mps): a step back or lean back;
 //   - the head leaving the blow's line (head_mps): a slip, or a duck when mostly downwards;
@@ -25,7 +25,7 @@ const char* response_quality_name(ResponseQuality quality);
 inline constexpr int k_response_quality_count = 3;
 
 struct ResponseSettings {
-    double blow_visible_mps = 0.5; // the striking part closing on its target this fast: the blow is under way
+    double blow_visible_mps = 0.5; // the striking part moving on the body this fast: the blow is under way
     double head_mps = 0.4;         // the head moving back, or off the blow's line, this fast: an answer
     double glove_mps = 0.5;        // a glove moving towards the blow's path this fast (relative to the head)
     double counter_window_s = 1.0; // a strike of the user's this long after the blow's contact is a counter
@@ -33,7 +33,7 @@ struct ResponseSettings {
 
 struct UserResponse {
     double began_s = 0.0;          // the strike began (the fighter left its guard)
-    double visible_s = -1.0;       // its striking part first closed on the target (blow_visible_mps); -1: never
+    double visible_s = -1.0;       // its striking part first left the guard (blow_visible_mps); -1: never
     double contact_s = -1.0;       // its contact (blocked, hit or missed there)
     ResponseKind kind = ResponseKind::none;
     bool moved = false;            // false: no answer, or a guard held on the path that blocked it
