@@ -130,6 +130,7 @@ svg .note { font-size: 12px; fill: #888; } svg .axis { stroke: #555; stroke-widt
 constexpr int k_attacks_shown = 4; // the most frequent attacks drawn one by one; the rest pooled
 
 std::string ms(double seconds) { return std::isfinite(seconds) ? fixed(seconds * 1000.0, 0) : "–"; }
+std::string ms_text(double seconds) { return std::isfinite(seconds) ? ms(seconds) + " ms" : "–"; }
 std::string percent(double part) { return std::isfinite(part) ? fixed(100.0 * part, 0) + "%" : "–"; }
 std::string seconds_attribute(double seconds) { return std::isfinite(seconds) ? fixed(seconds, 4) : "nan"; }
 
@@ -430,8 +431,8 @@ std::string comparisons_html(const std::vector<SessionProgress>& sessions) {
                 std::to_string(a.session.id) + "\" data-last-session-id=\"" + std::to_string(b.session.id) + "\"><td>" + escape_html(c.drill) +
                 (c.reaction_test ? " <span class=\"tag\">reaction test</span>" : "") + "</td>" + n("runs", std::to_string(c.runs)) + "<td>#" +
                 std::to_string(c.first + 1) + " " + escape_html(day(a.session.started_utc)) + " → #" + std::to_string(c.last + 1) + " " +
-                escape_html(day(b.session.started_utc)) + "</td>" + n("median-first", ms(a.response_time.median_s) + " ms") +
-                n("median-last", ms(b.response_time.median_s) + " ms") + change_cell("median-change", a.response_time.median_s, b.response_time.median_s, true, true) +
+                escape_html(day(b.session.started_utc)) + "</td>" + n("median-first", ms_text(a.response_time.median_s)) +
+                n("median-last", ms_text(b.response_time.median_s)) + change_cell("median-change", a.response_time.median_s, b.response_time.median_s, true, true) +
                 n("spread-first", spread(a.response_time)) + n("spread-last", spread(b.response_time)) + n("in-time-first", percent(share(a.in_time, a.attacks))) +
                 n("in-time-last", percent(share(b.in_time, b.attacks))) +
                 change_cell("in-time-change", share(a.in_time, a.attacks), share(b.in_time, b.attacks), false, false) + n("n-first", std::to_string(a.response_time.n)) +
@@ -455,8 +456,9 @@ std::string progress_html(const std::string& trainee, const std::vector<SessionP
     const long long incomplete = std::count_if(sessions.begin(), sessions.end(), [](const SessionProgress& s) { return !s.session.complete; });
     html += "<p class=\"overview\"><span id=\"sessions-count\">" + std::to_string(sessions.size()) + "</span> session" + (sessions.size() == 1 ? "" : "s");
     if (!sessions.empty()) {
-        html += ", from <span id=\"first-day\">" + escape_html(day(sessions.front().session.started_utc)) + "</span> to <span id=\"last-day\">" +
-                escape_html(day(sessions.back().session.started_utc)) + "</span>";
+        const std::string first = day(sessions.front().session.started_utc), last = day(sessions.back().session.started_utc);
+        html += first == last ? ", on <span id=\"first-day\">" + escape_html(first) + "</span>"
+                              : ", from <span id=\"first-day\">" + escape_html(first) + "</span> to <span id=\"last-day\">" + escape_html(last) + "</span>";
     }
     if (incomplete > 0) html += " (" + std::to_string(incomplete) + " did not end: marked incomplete)";
     html += "</p>";
