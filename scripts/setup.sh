@@ -7,9 +7,9 @@ set -euo pipefail
 
 packages=(build-essential cmake ninja-build g++ libeigen3-dev nlohmann-json3-dev libtinygltf-dev catch2 python3 libopenexr-dev libflann-dev
           qt6-base-dev qt6-qpa-plugins libqt6opengl6-dev libgl-dev libxkbcommon-dev fonts-dejavu-core
-          pybind11-dev python3-dev python3-numpy libopenxr-dev libopenxr-loader1 libx11-dev libtoml11-dev)
+          pybind11-dev python3-dev python3-numpy libopenxr-dev libopenxr-loader1 libx11-dev libtoml11-dev libsqlite3-dev)
 if [[ "${1:-}" == "--test" ]]; then
-  packages+=(blender python3-pytest python3-matplotlib clang-14 libfuzzer-14-dev openexr xvfb xauth libgl1-mesa-dri ccache
+  packages+=(blender python3-pytest python3-matplotlib python3-pandas clang-14 libfuzzer-14-dev openexr xvfb xauth libgl1-mesa-dri ccache
             # Monado, the OpenXR runtime the --xr tests run against (scripts/build_monado.sh), and Vulkan on the CPU
             # (lavapipe: Monado allocates the swapchains with Vulkan even for an OpenGL client)
             ninja-build pkg-config libudev-dev glslang-tools libvulkan-dev libegl-dev libx11-xcb-dev libxcb-randr0-dev

@@ -2,9 +2,10 @@
 // a display is present and --headless is not given (on the wall clock); headless on a simulated clock (as fast as
 // possible, deterministic with --seed) unless --realtime or a live tracker.
 
+#include "bout_run.h"
 #include "capture_loading.h"
 #include "partial_file.h"
-#include "play_difficulty.h"
+#include "kumite/runtime/difficulty.h"
 #include "play_motion.h"
 #include "play_output.h"
 #include "play_settings.h"
@@ -83,23 +84,23 @@ namespace {
 
 // The fighters' settings: the defaults, then --difficulty, then --settings FILE, then --aim and --no-defence, then
 // every --set in order.
-std::optional<int> read_play_settings(const Arguments& arguments, BoutOptions& options) {
+std::optional<int> read_play_settings(const CommandSpec& spec, const Arguments& arguments, BoutOptions& options) {
     if (const std::optional<std::string> level = arguments.value("difficulty")) {
-        if (Result<void> applied = apply_difficulty(options, *level); !applied) return usage_error(play_spec(), applied.error().message);
+        if (Result<void> applied = apply_difficulty(options, *level); !applied) return usage_error(spec, applied.error().message);
     }
     if (const std::optional<std::string> file = arguments.value("settings")) {
         if (Result<void> read = play_settings_read(*file, options); !read) return input_error(read.error().message);
     }
     if (const std::optional<std::string> text = arguments.value("aim")) {
-        if (Result<void> set = play_setting_assign(options, "aim=" + *text); !set) return usage_error(play_spec(), "--aim: " + set.error().message);
+        if (Result<void> set = play_setting_assign(options, "aim=" + *text); !set) return usage_error(spec, "--aim: " + set.error().message);
     }
     if (arguments.has("no-defence")) options.fighter.defence.enabled = false;
     if (arguments.has("spar")) options.attacks.on_its_own = true;
     for (const std::string& assignment : arguments.all("set")) {
-        if (Result<void> set = play_setting_assign(options, assignment); !set) return usage_error(play_spec(), set.error().message);
+        if (Result<void> set = play_setting_assign(options, assignment); !set) return usage_error(spec, set.error().message);
     }
     if (options.fighter.defence.block_clip_max_speed_ratio > 0.0 && !options.fighter.defence.captured_blocks) {
-        return usage_error(play_spec(), "defence.block_clip_max_speed_ratio limits captured blocks: set defence.captured_blocks = true too");
+        return usage_error(spec, "defence.block_clip_max_speed_ratio limits captured blocks: set defence.captured_blocks = true too");
     }
     return std::nullopt;
 }
@@ -115,13 +116,17 @@ bool display_present() {
 int run_play(int argc, char** argv) {
     Arguments arguments;
     if (std::optional<int> status = parse_command_line(play_spec(), argc, argv, arguments)) return *status;
+    return run_bout(play_spec(), arguments, nullptr);
+}
+
+int run_bout(const CommandSpec& spec, const Arguments& arguments, BoutRunExtras* extras) {
     const Result<long long> fighters_count = arguments.integer("fighters", 1, 10000, 1);
     const Result<long long> seed = arguments.integer("seed", 0, 1LL << 62, 1);
-    if (!fighters_count) return usage_error(play_spec(), fighters_count.error().message);
-    if (!seed) return usage_error(play_spec(), seed.error().message);
+    if (!fighters_count) return usage_error(spec, fighters_count.error().message);
+    if (!seed) return usage_error(spec, seed.error().message);
     BoutOptions options;
     options.attack_seed = static_cast<std::uint64_t>(*seed);
-    if (std::optional<int> status = read_play_settings(arguments, options)) return *status;
+    if (std::optional<int> status = read_play_settings(spec, arguments, options)) return *status;
     if (arguments.has("print-settings")) {
         std::cout << play_settings_text(options);
         return k_exit_ok;
@@ -131,7 +136,7 @@ int run_play(int argc, char** argv) {
         char* end = nullptr;
         duration_s = std::strtod(text->c_str(), &end);
         if (end == text->c_str() || *end != '\0' || !(duration_s > 0.0) || duration_s > 86400.0) {
-            return usage_error(play_spec(), "--duration must be seconds, more than 0, not '" + *text + "'");
+            return usage_error(spec, "--duration must be seconds, more than 0, not '" + *text + "'");
         }
     }
     const bool want_viewer = !arguments.has("headless") && !arguments.has("xr"); // --xr: the headset is the view
@@ -154,13 +159,13 @@ int run_play(int argc, char** argv) {
         dtrack_config = *read;
     }
     const bool xr = arguments.has("xr");
-    if (xr && arguments.has("tracker")) return usage_error(play_spec(), "--xr: the headset is the tracker, leave out --tracker");
-    if ((arguments.has("xr-eye-image") || arguments.has("xr-view-size")) && !xr) return usage_error(play_spec(), "--xr-eye-image and --xr-view-size need --xr");
+    if (xr && arguments.has("tracker")) return usage_error(spec, "--xr: the headset is the tracker, leave out --tracker");
+    if ((arguments.has("xr-eye-image") || arguments.has("xr-view-size")) && !xr) return usage_error(spec, "--xr-eye-image and --xr-view-size need --xr");
     Result<std::unique_ptr<HeadTracker>> tracker =
         xr ? Result<std::unique_ptr<HeadTracker>>(HeadTracker::fed())
            : HeadTracker::open(arguments.value("tracker").value_or("simulate:still"), dtrack_config, static_cast<std::uint64_t>(*seed));
     if (!tracker) {
-        return tracker.error().code == ErrorCode::invalid ? usage_error(play_spec(), tracker.error().message) : input_error(tracker.error().message);
+        return tracker.error().code == ErrorCode::invalid ? usage_error(spec, tracker.error().message) : input_error(tracker.error().message);
     }
     std::optional<CommandScript> script;
     std::unique_ptr<CommandStream> stream;
@@ -171,11 +176,11 @@ int run_play(int argc, char** argv) {
             script = std::move(*read);
         } else if (*commands == "stdin" || commands->starts_with("tcp:")) {
             Result<std::unique_ptr<CommandStream>> opened = CommandStream::open(*commands);
-            if (!opened) return usage_error(play_spec(), opened.error().message);
+            if (!opened) return usage_error(spec, opened.error().message);
             stream = std::move(*opened);
             if (stream->port() > 0) std::cerr << "kumite play: supervisor commands on 127.0.0.1:" << stream->port() << "\n";
         } else {
-            return usage_error(play_spec(), "--commands takes stdin, tcp:PORT or script:FILE, not '" + *commands + "'");
+            return usage_error(spec, "--commands takes stdin, tcp:PORT or script:FILE, not '" + *commands + "'");
         }
     }
 
@@ -195,16 +200,21 @@ int run_play(int argc, char** argv) {
         else std::cerr << "kumite play --xr: the default human body " << human.string() << " is missing: the first shipped character instead\n";
     }
     Result<BoutCast> cast = load_bout_cast(characters_dir, character);
-    if (!cast) return cast.error().code == ErrorCode::invalid ? usage_error(play_spec(), cast.error().message) : input_error(cast.error().message);
+    if (!cast) return cast.error().code == ErrorCode::invalid ? usage_error(spec, cast.error().message) : input_error(cast.error().message);
     options.fighters = static_cast<int>(*fighters_count);
     options.record = arguments.value("record").has_value();
     if (std::optional<std::string> problem = options.record ? recording_path_problem(*arguments.value("record")) : std::nullopt) {
-        return usage_error(play_spec(), "--record " + *problem);
+        return usage_error(spec, "--record " + *problem);
     }
     options.start_character = cast->start;
     Result<std::unique_ptr<Bout>> created = Bout::create(database->view(), std::move(cast->characters), std::move(*tracker), options);
     if (!created) return input_error(created.error().message);
     Bout& bout = **created;
+    if (extras && extras->drill) {
+        if (!arguments.has("duration")) duration_s = extras->drill->duration_s() + 1.0; // its end line ends the bout before
+        bout.set_drill(std::move(*extras->drill));
+        extras->drill.reset();
+    }
     if (script) bout.set_script(std::move(*script));
     if (stream) bout.set_stream(std::move(stream));
     bout.set_message_handler([](std::string_view message) { std::cerr << "kumite play: " << message; });
@@ -223,11 +233,17 @@ int run_play(int argc, char** argv) {
         if (capture && bout.counters().frames > 0 && !line.contains("capture_s")) line["capture_s"] = capture->capture_time_s();
         if (events_out.is_open()) events_out.stream() << line.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
         if (html_path) session.add(line);
+        if (extras && extras->on_event) extras->on_event(line);
     };
     if (const std::optional<std::string> path = arguments.value("events")) {
         if (Result<void> opened = events_out.open(*path, "the events file"); !opened) return input_error(opened.error().message);
     }
     const PlaySetup setup{xr ? std::string("xr") : arguments.value("tracker").value_or("simulate:still"), database_path->string(), *seed};
+    const nlohmann::json settings = play_settings_json(options);
+    if (extras && extras->on_start) {
+        const std::string start_character = bout.character_name(bout.fighter(0).character());
+        if (Result<void> started = extras->on_start({bout, settings, start_character, setup.tracker}); !started) return input_error(started.error().message);
+    }
     write_event(bout_start_json(bout, setup));
     if (const std::optional<nlohmann::json> source = tracker_source_json(bout)) {
         nlohmann::json line = {{"t", 0.0}, {"type", "tracker_source"}};
@@ -241,9 +257,12 @@ int run_play(int argc, char** argv) {
         user_out.stream() << "# t,x,y,z,lx,ly,lz,rx,ry,rz,lex,ley,lez,rex,rey,rez: the user's head, hands and the elbows their guard used (nan: not tracked, or the guard off), world metres\n" << std::fixed;
         user_out.stream().precision(6);
     }
+    DrillPartWatch drill_parts;
+    const bool every_event = events_out.is_open() || html_path || (extras && extras->on_event);
     auto after_step = [&] {
         if (user_out.is_open()) write_user_line(user_out.stream(), bout);
-        if (!events_out.is_open() && !html_path) return;
+        if (!every_event) return;
+        if (std::optional<nlohmann::json> line = drill_parts.changed(bout)) write_event(*line);
         for (const BoutEvent& event : bout.events()) write_event(play_event_json(bout, event));
         samples.clear();
         sampler.sample(bout, samples);
@@ -294,7 +313,8 @@ int run_play(int argc, char** argv) {
     nlohmann::json report = play_report_json(bout);
     if (const std::optional<nlohmann::json> source = tracker_source_json(bout)) report["tracker_source"] = *source;
     report["motion"] = motion;
-    report["settings"] = play_settings_json(options);
+    report["settings"] = settings;
+    if (bout.drill()) report["drill"] = drill_report_json(bout);
     report["difficulty"] = difficulty_of(options);
     report["realtime"] = realtime;
     report["viewer"] = viewer;
@@ -302,6 +322,9 @@ int run_play(int argc, char** argv) {
     if (viewer) report["viewer_drawing"] = {{"renderer", viewer_outcome.renderer}, {"body_meshes_uploaded", viewer_outcome.body_mesh_uploads}};
     if (const std::optional<std::string> path = arguments.value("report")) {
         if (Result<void> written = write_file_atomically(*path, report.dump(2) + "\n"); !written) return input_error(written.error().message);
+    }
+    if (extras && extras->on_end) {
+        if (Result<void> ended = extras->on_end(report); !ended) return input_error(ended.error().message);
     }
     if (html_path) {
         if (Result<void> written = write_file_atomically(*html_path, report::session_html(session, &report, arguments.value("events").value_or("kumite play"))); !written) {

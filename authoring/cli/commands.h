@@ -47,4 +47,17 @@ int run_play(int argc, char** argv);
 const CommandSpec& report_spec();
 int run_report(int argc, char** argv);
 
+// Training (authoring/training): a drill run and stored, the store's sessions, a trainee's progress, the export.
+const CommandSpec& train_spec();
+int run_train(int argc, char** argv);
+
+const CommandSpec& sessions_spec();
+int run_sessions(int argc, char** argv);
+
+const CommandSpec& progress_spec();
+int run_progress(int argc, char** argv);
+
+const CommandSpec& export_spec();
+int run_export(int argc, char** argv);
+
 } // namespace kumite::cli

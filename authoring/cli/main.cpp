@@ -10,7 +10,7 @@ namespace {
 
 using kumite::cli::Command;
 
-constexpr std::array<Command, 12> k_commands = {{
+constexpr std::array<Command, 16> k_commands = {{
     {kumite::cli::inspect_spec, kumite::cli::run_inspect},
     {kumite::cli::positions_spec, kumite::cli::run_positions},
     {kumite::cli::convert_spec, kumite::cli::run_convert},
@@ -23,6 +23,10 @@ constexpr std::array<Command, 12> k_commands = {{
     {kumite::cli::adapt_spec, kumite::cli::run_adapt},
     {kumite::cli::play_spec, kumite::cli::run_play},
     {kumite::cli::report_spec, kumite::cli::run_report},
+    {kumite::cli::train_spec, kumite::cli::run_train},
+    {kumite::cli::sessions_spec, kumite::cli::run_sessions},
+    {kumite::cli::progress_spec, kumite::cli::run_progress},
+    {kumite::cli::export_spec, kumite::cli::run_export},
 }};
 
 void print_overview(std::ostream& out) {

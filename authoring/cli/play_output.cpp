@@ -251,4 +251,28 @@ void RoomSampler::sample(const Bout& bout, std::vector<nlohmann::json>& lines) {
     }
 }
 
+std::optional<nlohmann::json> DrillPartWatch::changed(const Bout& bout) {
+    const DrillRun* drill = bout.drill();
+    if (!drill) return std::nullopt;
+    const int part = drill->status(bout.now_s()).part;
+    if (part < 0 || part == m_part) return std::nullopt;
+    m_part = part;
+    const DrillPart& info = drill->drill().parts[std::size_t(part)];
+    const DrillRun::Part& span = drill->parts()[std::size_t(part)];
+    return nlohmann::json{{"t", bout.now_s()}, {"type", "drill_part"}, {"part", part}, {"name", info.name}, {"difficulty", bout.difficulty()},
+                          {"free_sparring", info.free_sparring}, {"attacks", span.attacks}, {"end_s", span.end_s}};
+}
+
+nlohmann::json drill_report_json(const Bout& bout) {
+    const DrillRun& drill = *bout.drill();
+    nlohmann::json parts = nlohmann::json::array();
+    for (std::size_t p = 0; p < drill.parts().size(); ++p) {
+        const DrillPart& info = drill.drill().parts[p];
+        parts.push_back({{"name", info.name}, {"difficulty", info.difficulty.text.empty() ? nlohmann::json(nullptr) : nlohmann::json(info.difficulty.text)},
+                         {"free_sparring", info.free_sparring}, {"attacks", drill.parts()[p].attacks}, {"start_s", drill.parts()[p].start_s},
+                         {"end_s", drill.parts()[p].end_s}});
+    }
+    return {{"name", drill.drill().name}, {"duration_s", drill.duration_s()}, {"parts", parts}};
+}
+
 } // namespace kumite::cli

@@ -35,6 +35,16 @@ std::optional<nlohmann::json> tracker_source_json(const Bout& bout);
 // no head (a gap, as a replay reads it).
 void write_user_line(std::ostream& out, const Bout& bout);
 
+// A drill's part as it starts (a drill_part line), when the bout runs a drill.
+class DrillPartWatch {
+public:
+    std::optional<nlohmann::json> changed(const Bout& bout);
+private:
+    int m_part = -1;
+};
+// The drill as it was run: its name and parts (their times, levels, attacks).
+nlohmann::json drill_report_json(const Bout& bout);
+
 // The room over time, thinned: the head at a fixed period, each fighter when it has moved.
 class RoomSampler {
 public:

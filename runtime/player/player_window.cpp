@@ -262,6 +262,30 @@ private:
         return whole > 0 ? QString(" (%1%)").arg(100.0 * double(part) / double(whole), 0, 'f', 0) : QString();
     }
 
+    // The drill as it runs: the part and the one after, then what comes next and how many are left (or how long,
+    // free sparring).
+    QString drill_text() const {
+        const DrillRun* drill = m_bout.drill();
+        if (!drill) return {};
+        const DrillRun::Status status = drill->status(m_bout.now_s());
+        const QString name = QString::fromStdString(drill->drill().name);
+        if (status.part < 0) return QString("drill %1: over\n").arg(name);
+        QString text = QString("drill %1: part %2/%3 '%4' (%5)")
+                           .arg(name)
+                           .arg(status.part + 1)
+                           .arg(status.parts)
+                           .arg(QString::fromStdString(status.part_info->name))
+                           .arg(m_bout.difficulty());
+        if (status.part + 1 < status.parts) text += QString(", then '%1'").arg(QString::fromStdString(drill->drill().parts[std::size_t(status.part + 1)].name));
+        if (status.part_info->free_sparring) {
+            text += QString("\n    free sparring, %1 s left").arg(status.part_left_s, 0, 'f', 0);
+        } else {
+            text += QString("\n    %1 attack(s) left").arg(status.attacks_left);
+            if (status.next) text += QString(", next: %1 in %2 s").arg(QString::fromStdString(status.next->text)).arg(status.next->t_s - m_bout.now_s(), 0, 'f', 1);
+        }
+        return text + "\n";
+    }
+
     void draw_hud(QPainter& painter, const QRect& rect) {
         const BoutCounters& c = m_bout.counters();
         const Fighter& fighter = m_bout.fighter(0);
@@ -293,6 +317,7 @@ private:
                      .arg(c.orders_performed)
                      .arg(c.ignored_orders)
                      .arg(c.orders_expired);
+        lines += drill_text();
         if (const CaptureUser* capture = m_bout.tracker().capture()) {
             lines += QString("user: recorded, %1 at %2 s of %3 s (%4 m away, loops)\n")
                          .arg(QString::fromStdString(std::filesystem::path(capture->path()).filename().string()))
@@ -321,7 +346,7 @@ private:
         QFont font = painter.font();
         font.setPointSizeF(10.0);
         painter.setFont(font);
-        const QRect top(rect.left() + 10, rect.top() + 8, rect.width() - 20, 130);
+        const QRect top(rect.left() + 10, rect.top() + 8, rect.width() - 20, 170);
         painter.setPen(QColor(0, 0, 0, 160));
         painter.drawText(top.translated(1, 1), Qt::AlignLeft | Qt::AlignTop, lines);
         painter.setPen(QColor(235, 238, 245));

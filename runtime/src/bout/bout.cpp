@@ -2,6 +2,7 @@
 
 #include "bout/own_attacks.h"
 #include "kumite/runtime/combinations.h"
+#include "kumite/runtime/difficulty.h"
 
 #include <algorithm>
 #include <cmath>
@@ -171,6 +172,19 @@ void Bout::apply(std::string_view line, const std::string& where, bool own) {
     case SupervisorCommand::Verb::defence:
         for (auto& fighter : m_fighters) fighter->set_defence(command->argument == "on");
         break;
+    case SupervisorCommand::Verb::difficulty: {
+        DefenceSettings defence = m_fighters.front()->defence().settings();
+        AttackSettings attacks = m_own_attacks->settings();
+        difficulty_apply(*difficulty_find(command->argument), defence, attacks);
+        set_pace(defence, attacks);
+        break;
+    }
+    case SupervisorCommand::Verb::spar: {
+        AttackSettings attacks = m_own_attacks->settings();
+        attacks.on_its_own = command->argument == "on";
+        set_pace(m_fighters.front()->defence().settings(), attacks);
+        break;
+    }
     case SupervisorCommand::Verb::quit: m_quit = true; break;
     }
 }
@@ -210,7 +224,37 @@ void Bout::take_head(double t_s) {
     if (tracked) m_head = *tracked;
 }
 
+void Bout::apply_drill_line(const DrillRun::Line& line) {
+    switch (line.kind) {
+    case DrillRun::Line::Kind::part_start: {
+        const DrillPart& part = m_drill->drill().parts[std::size_t(line.part)];
+        DefenceSettings defence = m_fighters.front()->defence().settings();
+        AttackSettings attacks = m_own_attacks->settings();
+        if (const DifficultyLevel* level = difficulty_find(part.difficulty.text)) {
+            difficulty_apply(*level, defence, attacks);
+        } else { // the bout's own
+            defence.reaction_delay_s = m_options.fighter.defence.reaction_delay_s;
+            defence.defend_share = m_options.fighter.defence.defend_share;
+            attacks = m_options.attacks;
+        }
+        attacks.on_its_own = part.free_sparring;
+        set_pace(defence, attacks);
+        break;
+    }
+    case DrillRun::Line::Kind::attack: apply(line.text, "drill line " + std::to_string(line.source_line) + ": "); break;
+    case DrillRun::Line::Kind::end: m_quit = true; break;
+    }
+}
+
+void Bout::set_pace(const DefenceSettings& defence, const AttackSettings& attacks) {
+    for (auto& fighter : m_fighters) fighter->set_reaction(defence.reaction_delay_s, defence.defend_share);
+    m_own_attacks->set_settings(attacks);
+}
+
+const char* Bout::difficulty() const { return difficulty_of(m_fighters.front()->defence().settings(), m_own_attacks->settings()); }
+
 void Bout::apply_commands(double t_s) {
+    if (m_drill) m_drill->due(t_s, [&](const DrillRun::Line& line) { apply_drill_line(line); });
     if (m_has_script) m_script.due(t_s, [&](const CommandScript::Line& line) { apply(line.command, "line " + std::to_string(line.line) + ": "); });
     if (m_stream) m_stream->poll([&](std::string_view line) { apply(line, ""); });
     for (const std::string& line : m_queued) apply(line, "");

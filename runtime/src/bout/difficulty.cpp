@@ -1,11 +1,13 @@
-// The difficulty levels (play_difficulty.h).
+// The difficulty levels (difficulty.h).
 
-#include "play_difficulty.h"
+#include "kumite/runtime/difficulty.h"
+
+#include "kumite/runtime/bout.h"
 
 #include <array>
 #include <string>
 
-namespace kumite::cli {
+namespace kumite {
 namespace {
 
 constexpr auto k_levels = std::to_array<DifficultyLevel>({
@@ -22,28 +24,47 @@ constexpr auto k_levels = std::to_array<DifficultyLevel>({
 
 std::span<const DifficultyLevel> difficulty_levels() { return k_levels; }
 
-const char* difficulty_of(const BoutOptions& options) {
+const DifficultyLevel* difficulty_find(std::string_view name) {
     for (const DifficultyLevel& level : k_levels) {
-        if (options.fighter.defence.reaction_delay_s == level.reaction_delay_s && options.fighter.defence.defend_share == level.defend_share &&
-            options.attacks.tempo_s == level.tempo_s && options.attacks.combination_share == level.combination_share) {
+        if (name == level.name) return &level;
+    }
+    return nullptr;
+}
+
+const char* difficulty_of(const DefenceSettings& defence, const AttackSettings& attacks) {
+    for (const DifficultyLevel& level : k_levels) {
+        if (defence.reaction_delay_s == level.reaction_delay_s && defence.defend_share == level.defend_share && attacks.tempo_s == level.tempo_s &&
+            attacks.combination_share == level.combination_share) {
             return level.name;
         }
     }
     return "custom";
 }
 
-Result<void> apply_difficulty(BoutOptions& options, std::string_view name) {
-    for (const DifficultyLevel& level : k_levels) {
-        if (name != level.name) continue;
-        options.fighter.defence.reaction_delay_s = level.reaction_delay_s;
-        options.fighter.defence.defend_share = level.defend_share;
-        options.attacks.tempo_s = level.tempo_s;
-        options.attacks.combination_share = level.combination_share;
-        return {};
-    }
-    std::string names;
-    for (const DifficultyLevel& level : k_levels) names += (names.empty() ? "" : ", ") + std::string(level.name);
-    return make_error(ErrorCode::invalid, "--difficulty takes " + names + ", not '" + std::string(name) + "'");
+const char* difficulty_of(const BoutOptions& options) { return difficulty_of(options.fighter.defence, options.attacks); }
+
+void difficulty_apply(const DifficultyLevel& level, DefenceSettings& defence, AttackSettings& attacks) {
+    defence.reaction_delay_s = level.reaction_delay_s;
+    defence.defend_share = level.defend_share;
+    attacks.tempo_s = level.tempo_s;
+    attacks.combination_share = level.combination_share;
 }
 
-} // namespace kumite::cli
+Result<void> apply_difficulty(BoutOptions& options, std::string_view name) {
+    if (const DifficultyLevel* level = difficulty_find(name)) {
+        difficulty_apply(*level, options.fighter.defence, options.attacks);
+        return {};
+    }
+    return make_error(ErrorCode::invalid, "difficulty takes " + std::string(difficulty_names()) + ", not '" + std::string(name) + "'");
+}
+
+const char* difficulty_names() {
+    static const std::string names = [] {
+        std::string text;
+        for (const DifficultyLevel& level : k_levels) text += (text.empty() ? "" : ", ") + std::string(level.name);
+        return text;
+    }();
+    return names.c_str();
+}
+
+} // namespace kumite

@@ -14,6 +14,11 @@ OwnAttacks::OwnAttacks(const AttackSettings& settings, std::uint64_t seed, std::
     m_line.reserve(32);
 }
 
+void OwnAttacks::set_settings(const AttackSettings& settings) {
+    if (settings.on_its_own && !m_settings.on_its_own) m_next_s = -1.0;
+    m_settings = settings;
+}
+
 double OwnAttacks::next_gap_s() { return m_settings.tempo_s * m_random.uniform(0.6, 1.4); }
 
 const std::string& OwnAttacks::due(double t_s, bool free) {

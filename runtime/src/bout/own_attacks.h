@@ -22,6 +22,10 @@ public:
     // The supervisor line of the attack due at `t_s` ("punch", "kick", "combo one-two"), or empty: none is due, or
     // the fighter is not `free` (then it comes as soon as it is).
     const std::string& due(double t_s, bool free);
+    // New settings from now on (a drill's part, the supervisor's difficulty or spar): switched on, the first
+    // attack comes a gap after the next frame.
+    void set_settings(const AttackSettings& settings);
+    const AttackSettings& settings() const { return m_settings; }
 
 private:
     double next_gap_s();

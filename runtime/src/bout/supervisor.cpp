@@ -1,6 +1,7 @@
 #include "kumite/runtime/supervisor.h"
 
 #include "kumite/runtime/combinations.h"
+#include "kumite/runtime/difficulty.h"
 
 #include <algorithm>
 #include <arpa/inet.h>
@@ -104,11 +105,19 @@ Result<SupervisorCommand> supervisor_command_parse(std::string_view line) {
         }
         command.verb = SupervisorCommand::Verb::combo;
         command.argument = argument;
+    } else if (verb == "difficulty") {
+        if (!difficulty_find(argument)) return make_error(ErrorCode::invalid, "difficulty takes " + std::string(difficulty_names()) + ", not '" + std::string(argument) + "'");
+        command.verb = SupervisorCommand::Verb::difficulty;
+        command.argument = argument;
+    } else if (verb == "spar") {
+        if (argument != "on" && argument != "off") return make_error(ErrorCode::invalid, "spar must be on or off, not '" + std::string(argument) + "'");
+        command.verb = SupervisorCommand::Verb::spar;
+        command.argument = argument;
     } else if (verb == "quit") {
         if (!argument.empty()) return make_error(ErrorCode::invalid, "quit takes nothing");
         command.verb = SupervisorCommand::Verb::quit;
     } else {
-        return make_error(ErrorCode::invalid, "unknown command '" + std::string(verb) + "' (punch, kick, slash, knee, elbow, combo, character, aim, defence, quit)");
+        return make_error(ErrorCode::invalid, "unknown command '" + std::string(verb) + "' (punch, kick, slash, knee, elbow, combo, character, aim, defence, difficulty, spar, quit)");
     }
     return command;
 }

@@ -295,6 +295,11 @@ bool Fighter::busy() const {
 // What the fighter tells its callers, read from its parts.
 
 void Fighter::set_defence(bool enabled) { m_parts->defence.defence().settings().enabled = enabled; }
+void Fighter::set_reaction(double reaction_delay_s, double defend_share) {
+    DefenceSettings& settings = m_parts->defence.defence().settings();
+    settings.reaction_delay_s = reaction_delay_s;
+    settings.defend_share = defend_share;
+}
 bool Fighter::defence_enabled() const { return m_parts->defence.defence().enabled(); }
 const Defence& Fighter::defence() const { return m_parts->defence.defence(); }
 const UserGuard& Fighter::user_guard() const { return m_parts->user.guard(); }

@@ -9,6 +9,7 @@
 #include "kumite/formats/bvh_reader.h"
 #include "kumite/runtime/attack_settings.h"
 #include "kumite/runtime/bout_counters.h"
+#include "kumite/runtime/drill_run.h"
 #include "kumite/runtime/fighter.h"
 #include "kumite/runtime/head_tracker.h"
 #include "kumite/runtime/motion_meter.h"
@@ -19,6 +20,7 @@
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -65,6 +67,12 @@ public:
 
     void set_script(CommandScript script) { m_script = std::move(script), m_has_script = true; }
     void set_stream(std::unique_ptr<CommandStream> stream) { m_stream = std::move(stream); }
+    // A drill to run from t = 0 (drill_run.h): each part sets its difficulty (or the bout's own) and its free
+    // sparring, its attacks come with the frame's other commands, and its end ends the bout (quit_requested).
+    void set_drill(DrillRun drill) { m_drill = std::move(drill); }
+    const DrillRun* drill() const { return m_drill ? &*m_drill : nullptr; }
+    // The fighters' difficulty level now (difficulty.h), or "custom".
+    const char* difficulty() const;
     // Where messages go (bad command lines when there is no stream to answer); default: ignored.
     void set_message_handler(std::function<void(std::string_view)> handler) { m_message = std::move(handler); }
 
@@ -111,6 +119,9 @@ private:
     struct Character;
     int fighter_character_of(const std::string& name) const;
     void apply(std::string_view line, const std::string& where, bool own = false); // own: the fighter's own attack
+    void apply_drill_line(const DrillRun::Line& line);
+    // The reaction, defence share and own attacks of a level (or of the bout's options) for every fighter.
+    void set_pace(const DefenceSettings& defence, const AttackSettings& attacks);
     void tell(std::string_view message); // to the stream, else the message handler
     // The frame's parts, in the order step() calls them.
     void take_head(double t_s);
@@ -130,6 +141,7 @@ private:
     CommandScript m_script;
     bool m_has_script = false;
     std::unique_ptr<CommandStream> m_stream;
+    std::optional<DrillRun> m_drill;
     std::function<void(std::string_view)> m_message;
     std::vector<std::string> m_queued; // lines from command()
     std::vector<BoutEvent> m_events;

@@ -51,6 +51,8 @@ public:
     void set_aim(FighterAim aim) { m_settings.aim = aim; } // from the next strike on
     FighterAim aim() const { return m_settings.aim; }
     void set_defence(bool enabled);
+    // Its reaction: the delay after its defence sees a blow before it moves, and the share of blows it defends.
+    void set_reaction(double reaction_delay_s, double defend_share);
     bool defence_enabled() const;
     const Defence& defence() const;
     const UserGuard& user_guard() const; // the user's guard as this frame's strikes meet it (when user_guard.enabled)

@@ -2,7 +2,8 @@
 // Supervisor commands, one per line: `punch [left|right] [straight|hook|uppercut] [low|middle|high]`,
 // `kick [left|right] [front|roundhouse|side] [low|middle|high]` (any of the three, in any order; `other` is a kind
 // too), `slash`, `knee`, `elbow [left|right] [low|middle|high]`,
-// `combo one-two|jab-hook|jab-body-head` (combinations.h), `character NAME`, `aim latched|predicted`, `defence on|off`, `quit`. They come
+// `combo one-two|jab-hook|jab-body-head` (combinations.h), `character NAME`, `aim latched|predicted`, `defence on|off`,
+// `difficulty LEVEL` (difficulty.h), `spar on|off` (the fighter's own attacks), `quit`. They come
 // from a script file (`<time_s> <command>` lines), stdin, or a TCP connection on 127.0.0.1 (the port is opt-in).
 // Streams are read without blocking from the frame loop; an unknown line is answered with an error line (on stdout
 // for stdin, on the connection for TCP) and ignored.
@@ -20,11 +21,11 @@
 namespace kumite {
 
 struct SupervisorCommand {
-    enum class Verb { punch, kick, slash, knee, elbow, combo, character, aim, defence, quit } verb = Verb::punch;
+    enum class Verb { punch, kick, slash, knee, elbow, combo, character, aim, defence, difficulty, spar, quit } verb = Verb::punch;
     std::string side;      // "", "left" or "right" for strikes
     StrikeKind kind = StrikeKind::none;       // strikes: none = any
     StrikeHeight height = StrikeHeight::none; // strikes: none = any
-    std::string argument;  // the character's name, the aim mode, the combination's name
+    std::string argument;  // the character's name, the aim mode, the combination's name, the level, on/off
     bool is_strike() const { return verb <= Verb::elbow; }
     const char* semantics() const;
 };

@@ -1,0 +1,54 @@
+"""A drill's frame time with the training store against the same drill with --no-store (the baseline, in the same
+run): the reaction test (data/drills/reaction-test.toml, 20 attacks, about 95 s of frames) headless against a
+simulated trainee who covers, the two alternated --runs times (default 5). Headless bouts step as fast as they can,
+so the store's thread commits while frames are computed back to back: harsher than the room's 60 Hz. Prints JSON:
+per mode the frame time's p99 and mean (microseconds) of each run and their medians, and the ratio of the p99s'
+medians (the bar: at most 1.10).
+
+    /usr/bin/python3 tests/bench/train_store_bench.py KUMITE [DB.kdb] [--runs N]
+"""
+import argparse
+import json
+import os
+import pathlib
+import statistics
+import subprocess
+import tempfile
+
+SOURCE = pathlib.Path(__file__).resolve().parents[2]
+
+
+def drill_run(kumite, database, work, store, index):
+    report = os.path.join(work, f"report{index}.json")
+    command = [kumite, "train", database, "--headless", "--trainee", "bench", "--drill", str(SOURCE / "data" / "drills" / "reaction-test.toml"),
+               "--tracker", "simulate:cover:0.25", "--report", report]
+    command += ["--store", store] if store else ["--no-store"]
+    subprocess.run(command, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    with open(report) as f:
+        frame = json.load(f)["frame_time_us"]
+    return frame["p99"], frame["mean"]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("kumite")
+    parser.add_argument("database", nargs="?", default=str(SOURCE / "data" / "golden" / "golden-v2.kdb"))
+    parser.add_argument("--runs", type=int, default=5)
+    args = parser.parse_args()
+    runs = {"with_store": [], "no_store_baseline": []}
+    with tempfile.TemporaryDirectory() as work:
+        store = os.path.join(work, "bench.sqlite")
+        for run in range(args.runs):
+            for mode in (("with_store", "no_store_baseline") if run % 2 == 0 else ("no_store_baseline", "with_store")):
+                runs[mode].append(drill_run(args.kumite, args.database, work, store if mode == "with_store" else None, len(runs[mode]) + 10 * run))
+    result = {}
+    for mode, values in runs.items():
+        result[mode] = {"frame_p99_us": [v[0] for v in values], "frame_mean_us": [v[1] for v in values],
+                        "median_of_p99_us": statistics.median(v[0] for v in values), "median_of_mean_us": statistics.median(v[1] for v in values)}
+    result["p99_ratio"] = result["with_store"]["median_of_p99_us"] / result["no_store_baseline"]["median_of_p99_us"]
+    result["runs"] = args.runs
+    print(json.dumps(result, indent=1))
+
+
+if __name__ == "__main__":
+    main()
