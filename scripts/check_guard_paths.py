@@ -141,21 +141,31 @@ def judge(positions, info, lines, track):
             if first:
                 first_frame = frame
                 break
-        # How deep the fist or foot goes into the glove that blocked it, to the strike's end and 0.3 s past it.
-        deepest, deepest_after = 0.0, 0.0
+        # How deep the fist or foot goes into the glove that blocked it, to the strike's end and 0.3 s past it; past
+        # the end, how much of that depth the fighter's own limb made (its motion towards the glove's centre) rather
+        # than the glove coming on.
+        deepest, deepest_after, fighter_after = 0.0, 0.0, 0.0
         blocked_by = e.get("blocked_by", "")
         if blocked_by.startswith("glove_"):
             glove = 0 if blocked_by == "glove_left" else 1
+            end_frame, made_by_fighter = int(round(end * fps)), 0.0
             for frame in range(int(round(e["t"] * fps)), min(last, int(round((end + 0.3) * fps))) + 1):
                 centre = track[frame][4 + 3 * glove: 7 + 3 * glove]
                 depth = GLOVE + FIST - math.dist(point(frame, limb, side), centre)
-                if frame <= int(round(end * fps)):
+                if frame <= end_frame:
                     deepest = max(deepest, depth)
-                else:
-                    deepest_after = max(deepest_after, depth)
+                    continue
+                before = point(frame - 1, limb, side)
+                away = sub(before, track[frame - 1][4 + 3 * glove: 7 + 3 * glove])
+                length = math.sqrt(dot(away, away))
+                if length > 1e-9:  # the limb's own step towards the glove it was at, this frame
+                    made_by_fighter = max(0.0, made_by_fighter - dot(sub(point(frame, limb, side), before), away) / length)
+                if depth > deepest_after:
+                    deepest_after, fighter_after = depth, min(depth, made_by_fighter) if depth > 0 else 0.0
         strikes.append({"t": e["t"], "command": e["command"], "result": e["result"], "blocked_by": blocked_by,
                         "path_first": first or "nothing", "path_first_t": first_frame / fps if first_frame else None,
-                        "deepest_in_glove_m": deepest, "deepest_after_end_m": deepest_after})
+                        "deepest_in_glove_m": deepest, "deepest_after_end_m": deepest_after,
+                        "deepest_after_end_by_fighter_m": fighter_after})
     return strikes
 
 
@@ -169,7 +179,8 @@ def summarise(strikes):
             "reported_hit": len(hits),
             "hit_with_guard_first": sum(s["path_first"].startswith(("glove_", "forearm_")) for s in hits),
             "deepest_in_glove_m": max((s["deepest_in_glove_m"] for s in strikes), default=0.0),
-            "deepest_after_end_m": max((s["deepest_after_end_m"] for s in strikes), default=0.0)}
+            "deepest_after_end_m": max((s["deepest_after_end_m"] for s in strikes), default=0.0),
+            "deepest_after_end_by_fighter_m": max((s["deepest_after_end_by_fighter_m"] for s in strikes), default=0.0)}
 
 
 def main():
@@ -205,7 +216,8 @@ def main():
           f"{total['of_those_reported_blocked']} of them reported blocked ({100 * blocked_share:.1f}%); "
           f"{total['reported_hit']} reported hit, {total['hit_with_guard_first']} with the guard first ({100 * through_share:.1f}%); "
           f"deepest in the blocking glove {100 * total['deepest_in_glove_m']:.1f} cm to the strike's end, "
-          f"{100 * total['deepest_after_end_m']:.1f} cm over the 0.3 s after")
+          f"{100 * total['deepest_after_end_m']:.1f} cm over the 0.3 s after (of it made by the fighter's limb moving in: "
+          f"{100 * total['deepest_after_end_by_fighter_m']:.1f} cm)")
     if args.json:
         with open(args.json, "w") as out:
             json.dump({"total": total, "bouts": results}, out, indent=1)
