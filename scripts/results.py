@@ -235,6 +235,13 @@ NEEDS = {
                      ("fighters", "1", "baseline_guard_only_frame_time_us", "p99"), ("fighters", "1", "baseline_planning_in_frame", "slowest_frame_us"),
                      ("fighters", "1", "baseline_planning_in_frame", "frames_over_16_7_ms"), ("fighters", "1", "allocations")],
     "python_step_bench": [("frames",), ("python_step_us", "p99"), ("python_step_us", "mean"), ("baseline_cpp_step_us", "mean"), ("python_over_cpp",)],
+    "store_bench": [("store", "sessions"), ("store", "attacks_per_session"), ("store", "trainees"), ("store", "bytes"), ("store", "generation_s"),
+                    ("list", "time", "median_s"), ("list", "time", "p99_s"), ("trainee", "sessions"), ("trainee", "attacks"),
+                    ("trainee", "time", "median_s"), ("trainee", "time", "p99_s"), ("baseline", "name"), ("baseline", "time", "median_s"),
+                    ("session_writer_add", "median_us"), ("session_writer_add", "p99_us")],
+    "store_commands_bench": [("sessions", "median_s"), ("sessions", "p99_s"), ("progress", "median_s"), ("progress", "p99_s"),
+                             ("baseline_start", "median_s")],
+    "train_store_bench": [("runs",), ("with_store", "median_of_p99_us"), ("no_store_baseline", "median_of_p99_us"), ("p99_ratio",)],
     "xr_frame_bench": [("seconds",), ("runtime",), ("results", 0, "fighters"), ("results", 0, "frame_work_us", "p99"), ("results", 0, "render_us", "median"),
                        ("results", 0, "frames_submitted"), ("results", 0, "frames_waited"), ("results", 0, "baseline", "p99")],
 }
@@ -263,6 +270,12 @@ def benchmarks(ctx):
     out["python_step"] = bench_run("python_step_bench", [python, os.path.join(ROOT, "tests", "bench", "python_step_bench.py"), ctx.db,
                                                          "2" if s else "60"], python_env)
     out["xr"] = xr_frames(ctx)
+    # The training store: at scale, its commands as whole processes, and a drill's frames with and without it.
+    out["store"] = bench_run("store_bench", [ctx.binary("store_bench")] + (["--sessions", "500", "--repeats", "2"] if s else ["--repeats", "20"]), env)
+    out["store_commands"] = bench_run("store_commands_bench", [python, os.path.join(ROOT, "tests", "bench", "store_commands_bench.py"), ctx.kumite,
+                                                               ctx.binary("store_bench"), "--runs", "2" if s else "20"], env)
+    out["train_store"] = bench_run("train_store_bench", [python, os.path.join(ROOT, "tests", "bench", "train_store_bench.py"), ctx.kumite, ctx.db,
+                                                         "--runs", "1" if s else "5"], env)
     return out
 
 
@@ -594,6 +607,30 @@ def parse_section(bench, baked):
     return lines
 
 
+def training_section(bench):
+    store, commands, frames = bench["store"], bench["store_commands"], bench["train_store"]
+    lines = ["## The training store", ""]
+    lines += [f"A generated store (`store_bench`) of {store['store']['sessions']:,} sessions of {store['store']['attacks_per_session']} attacks "
+              f"over {store['store']['trainees']} trainees, {f(store['store']['bytes'] / 1e6, 1)} MB, written in "
+              f"{f(store['store']['generation_s'], 1)} s; seconds, on a warm page cache.", ""]
+    rows = [("every session listed (`StoreReader::sessions`)", f(store["list"]["time"]["median_s"], 3), f(store["list"]["time"]["p99_s"], 3)),
+            (f"one trainee's {store['trainee']['sessions']} sessions and {store['trainee']['attacks']:,} attacks", f(store["trainee"]["time"]["median_s"], 3),
+             f(store["trainee"]["time"]["p99_s"], 3)),
+            (f"baseline: {store['baseline']['name']}", f(store["baseline"]["time"]["median_s"], 3), "")]
+    lines += [table(["read", "median", "p99"], rows), ""]
+    rows = [("`kumite sessions`", f(commands["sessions"]["median_s"], 3), f(commands["sessions"]["p99_s"], 3), "0.2"),
+            ("`kumite progress NAME` (page written)", f(commands["progress"]["median_s"], 3), f(commands["progress"]["p99_s"], 3), "1"),
+            ("baseline: `kumite --version`", f(commands["baseline_start"]["median_s"], 3), "", "")]
+    lines += ["The commands as whole processes on a store of 10,000 sessions (`store_commands_bench.py`), seconds:", "",
+              table(["command", "median", "p99", "bar"], rows), ""]
+    lines += [f"A session's rows are queued from the frame loop ({f(store['session_writer_add']['median_us'], 2)} µs median, "
+              f"{f(store['session_writer_add']['p99_us'], 1)} µs p99 a row) and committed by a thread. A drill's frame time p99 with the store: "
+              f"{f(frames['with_store']['median_of_p99_us'])} µs, against {f(frames['no_store_baseline']['median_of_p99_us'])} µs with `--no-store` "
+              f"(ratio {f(frames['p99_ratio'], 2)}, the bar 1.10; `train_store_bench.py`, the reaction test headless, median of {frames['runs']} "
+              "runs each).", ""]
+    return lines
+
+
 def page(ctx, sections, seconds):
     mode = "short mode: few iterations, one opponent, short bouts; a check that the script runs, not figures to quote" \
         if ctx.short else "full run"
@@ -637,7 +674,7 @@ def main():
             try:
                 sections = [strikes_section(rates, opponents, bout), blows_section(opponents, ctx.mocap), speed_section(opponents),
                             distance_section(opponents), frame_section(bench, bout), retrieval_section(bench, adapted),
-                            parse_section(bench, baked)]
+                            parse_section(bench, baked), training_section(bench)]
             except (KeyError, TypeError, IndexError, ZeroDivisionError, statistics.StatisticsError) as error:
                 raise Failure(f"a step's output lacks what the page needs: {type(error).__name__} {error}")
         text = page(ctx, sections, time.monotonic() - started)
