@@ -275,7 +275,7 @@ def benchmarks(ctx):
     out["store_commands"] = bench_run("store_commands_bench", [python, os.path.join(ROOT, "tests", "bench", "store_commands_bench.py"), ctx.kumite,
                                                                ctx.binary("store_bench"), "--runs", "2" if s else "20"], env)
     out["train_store"] = bench_run("train_store_bench", [python, os.path.join(ROOT, "tests", "bench", "train_store_bench.py"), ctx.kumite, ctx.db,
-                                                         "--runs", "1" if s else "5"], env)
+                                                         "--runs", "1" if s else "9"], env)
     return out
 
 

@@ -27,8 +27,10 @@ struct BoutRunExtras {
     std::optional<DrillRun> drill;  // run it; the bout lasts as long as it
     // Before the first step; an error ends the command (exit 1) before anything ran.
     std::function<Result<void>(const BoutRunStart&)> on_start;
-    // Every event line, as the events file gets it (also without --events).
+    // Every event line, as the events file gets it (also without --events): all of them, or without --events and
+    // --html only those of the types wants_event takes (when given), and the drill's parts.
     std::function<void(const nlohmann::json&)> on_event;
+    std::function<bool(FighterEvent::Type)> wants_event;
     // With the report, after the bout; an error ends the command (exit 1) after the files were written.
     std::function<Result<void>(const nlohmann::json& report)> on_end;
 };

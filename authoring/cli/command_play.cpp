@@ -258,12 +258,18 @@ int run_bout(const CommandSpec& spec, const Arguments& arguments, BoutRunExtras*
         user_out.stream().precision(6);
     }
     DrillPartWatch drill_parts;
-    const bool every_event = events_out.is_open() || html_path || (extras && extras->on_event);
+    // Every event and the room's samples for the files; only what the extras take otherwise (kept off the frame loop's
+    // thread: a JSON line for each of a bout's thousand events would be built for nothing).
+    const bool every_event = events_out.is_open() || html_path;
+    const bool some_events = extras && extras->on_event;
     auto after_step = [&] {
         if (user_out.is_open()) write_user_line(user_out.stream(), bout);
-        if (!every_event) return;
+        if (!every_event && !some_events) return;
         if (std::optional<nlohmann::json> line = drill_parts.changed(bout)) write_event(*line);
-        for (const BoutEvent& event : bout.events()) write_event(play_event_json(bout, event));
+        for (const BoutEvent& event : bout.events()) {
+            if (every_event || !extras->wants_event || extras->wants_event(event.event.type)) write_event(play_event_json(bout, event));
+        }
+        if (!every_event) return;
         samples.clear();
         sampler.sample(bout, samples);
         for (const nlohmann::json& line : samples) write_event(line);

@@ -110,6 +110,7 @@ int run_train(int argc, char** argv) {
             const double t = line.value("t", 0.0);
             if (t >= stored_duration_s + 1.0) writer->set_duration(stored_duration_s = t);
         };
+        extras.wants_event = [](FighterEvent::Type type) { return type == FighterEvent::Type::user_response || type == FighterEvent::Type::user_strike_end; };
         extras.on_end = [&](const nlohmann::json& report) -> Result<void> {
             const double duration_s = double(report.value("frames", 0LL)) / 60.0;
             if (Result<void> finished = writer->finish(duration_s, train_summary_json(report).dump()); !finished) return finished.error();

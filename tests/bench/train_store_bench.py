@@ -1,6 +1,6 @@
 """A drill's frame time with the training store against the same drill with --no-store (the baseline, in the same
 run): the reaction test (data/drills/reaction-test.toml, 20 attacks, about 95 s of frames) headless against a
-simulated trainee who covers, the two alternated --runs times (default 5). Headless bouts step as fast as they can,
+simulated trainee who covers, the two alternated --runs times (default 9). Headless bouts step as fast as they can,
 so the store's thread commits while frames are computed back to back: harsher than the room's 60 Hz. Prints JSON:
 per mode the frame time's p99 and mean (microseconds) of each run and their medians, and the ratio of the p99s'
 medians (the bar: at most 1.10).
@@ -33,7 +33,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("kumite")
     parser.add_argument("database", nargs="?", default=str(SOURCE / "data" / "golden" / "golden-v2.kdb"))
-    parser.add_argument("--runs", type=int, default=5)
+    parser.add_argument("--runs", type=int, default=9)
     args = parser.parse_args()
     runs = {"with_store": [], "no_store_baseline": []}
     with tempfile.TemporaryDirectory() as work:
