@@ -81,7 +81,7 @@ ADDED = {
     ("hachaj-kata/fukyugata_ni.bvh", "forearm_l", 1906): "elbow",
     ("hachaj-kata/fukyugata_ni.bvh", "forearm_r", 2589): "elbow",
     ("hachaj-kata/0.2-fukyugata_ni.bvh", "forearm_l", 1520): "elbow",
-    # Pinan Shodan's middle blocks (issue 26: blocks for punches at the chest), found by a scan for the forearm's
+    # Pinan Shodan's middle blocks (blocks for punches at the chest), found by a scan for the forearm's
     # contact point sweeping 20 cm or more sideways at chest height and stopping with the forearm upright (the wrist
     # above the elbow by 0.6 of the forearm), the elbow bent 60-120 degrees, the wrist 20 cm or more in front of the
     # chest; hit where the sideways sweep falls under a fifth of its fastest. Accepted on filmstrips of the 0.3 s

@@ -224,7 +224,7 @@ def main():
           f"blocks too {fmt(strict['defended'], strict['would_land'])}{interval(strict['defended_rate_ci95'])}, "
           f"captured blocks {fmt(overall['block_clips'], overall['blocks'])}; "
           f"worst hits {worst_hits[0]}, worst defence {worst_defence[0]}", file=sys.stderr)
-    # Motion (issue 44): speed at contact by kind, the fastest joints by move against the library's, the distance kept.
+    # Motion: speed at contact by kind, the fastest joints by move against the library's, the distance kept.
     contact = {}
     for row in rows:
         for kind, speeds in row["contact_speeds"].items():

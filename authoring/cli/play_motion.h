@@ -1,5 +1,5 @@
 #pragma once
-// The fighters' motion in numbers (issue 44): the fastest wrist, ankle, elbow and knee in each kind of move against
+// The fighters' motion in numbers: the fastest wrist, ankle, elbow and knee in each kind of move against
 // the library's fastest for that kind (the database's clips played on the starting character), and the distance kept
 // to the user's head between strikes. Written into the report and the bout_end event (the session report reads it).
 

@@ -17,7 +17,7 @@ nlohmann::json summary_of(const ValueHistogram& values) {
     return {{"mean", values.mean()}, {"p99", values.quantile(0.99)}, {"max", values.max()}};
 }
 
-// Median, p95 and max (the strike figures of issue 13's reports).
+// Median, p95 and max (the strike figures of the reports).
 nlohmann::json quantiles_of(const ValueHistogram& values) {
     return {{"median", values.quantile(0.5)}, {"p95", values.quantile(0.95)}, {"max", values.max()}, {"count", values.count()}};
 }

@@ -1,5 +1,5 @@
 #pragma once
-// The session report's motion table (issue 44): how fast the fighter's wrists, ankles, elbows and knees moved in each
+// The session report's motion table: how fast the fighter's wrists, ankles, elbows and knees moved in each
 // kind of move against the library's fastest for that kind, the speed at contact by kind of strike, and the distance
 // kept to the user between strikes, from the bout_end line's `motion` object (kumite play writes it).
 

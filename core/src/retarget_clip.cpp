@@ -197,7 +197,7 @@ Clip retarget_clip(RetargetReport& report, const Clip& source, const RestAnatomy
             }
             pins.hip_shift_world /= count;
             // With both feet down the mean shift leaves each leg half the other's difference: the shift near it
-            // from which both come nearest to their source's extension (issue 46: the limbs stay true as the feet
+            // from which both come nearest to their source's extension (the limbs stay true as the feet
             // stay planted).
             if (count == 2) {
                 std::array<Eigen::Vector3d, 2> to_pin;

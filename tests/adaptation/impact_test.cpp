@@ -43,7 +43,7 @@ StrikeRun run_strike(const MotionDatabaseView& db, const Retriever& retriever, c
                   character.ankles);
     adapter.set_impact(impact);
     run.contact = adapter.contact_index();
-    // The contact: where the hit point has covered 90% of its way to the annotated hit, still travelling (issue 44).
+    // The contact: where the hit point has covered 90% of its way to the annotated hit, still travelling.
     CHECK(found.contact_frame == db_clip_contact_frame(db, db.clips[found.clip], 0.9, RetrievalSettings{}.contact_speed_share));
     CHECK(found.contact_frame <= int(db.clips[found.clip].hit_frame));
     std::vector<Eigen::Vector3d> path;
@@ -243,7 +243,7 @@ TEST_CASE("impact: near targets get a shorter strike, not a full one pulled back
         INFO((bandai_only ? "Bandai's punches" : "every punch") << ": arriving towards the body: progress " << towards_body[0] << ", time "
                                                                 << towards_body[1] << " of " << strikes << ": " << looped);
         // The progress ramp never loops more often than the time ramp. (With the contact at the annotated hit, the
-        // time ramp looped on 8-12 of Bandai's 90; with the contact where the fist still travels, issue 44, both
+        // time ramp looped on 8-12 of Bandai's 90; with the contact where the fist still travels, both
         // rarely do.)
         if (bandai_only) CHECK(towards_body[0] <= towards_body[1]);
         CHECK(towards_body[0] <= strikes / 10);

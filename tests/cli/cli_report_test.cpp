@@ -105,7 +105,7 @@ TEST_CASE("cli: report and play --html draw the bout's events, counts equal to t
         CHECK(otherwise > 0);
     }
 
-    // The motion (issue 44): frames by move kind summing to the bout's, the strikes' speeds at contact by kind
+    // The motion: frames by move kind summing to the bout's, the strikes' speeds at contact by kind
     // equal to the events', the same object in the report and the bout_end line, drawn on both pages.
     const nlohmann::json& motion = report["motion"];
     long long motion_frames = 0;

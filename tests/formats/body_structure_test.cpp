@@ -55,7 +55,7 @@ TEST_CASE("body structure: the shipped and shared characters, names stripped, gi
     int compared = 0, found = 0;
     for (const std::filesystem::path& file : files) {
         Result<BvhFile> character = read_character_file(file);
-        if (!character) continue; // characters kumite cannot read yet (issue 25's other parts)
+        if (!character) continue; // characters kumite cannot read yet (formats not supported)
         INFO(file.string());
         // Never a wrong part: each is the named one, or (a rest pose that is not standing) none is found.
         CHECK(differences(character->clip.skeleton, character->body_map, false) == "");

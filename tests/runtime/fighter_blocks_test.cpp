@@ -1,4 +1,4 @@
-// The fighter's captured blocks (issue 26) on the reference database: against recorded boxers (the forearm on the
+// The fighter's captured blocks on the reference database: against recorded boxers (the forearm on the
 // fist's path, most blocks captured), against simulate:punch (in front of the chest, low punches swept down, the hold
 // and release no faster than the clip) and with a speed limit (never faster than the clip).
 
@@ -34,7 +34,7 @@ TEST_CASE("fighter: captured blocks against recorded boxers put the forearm on t
         REQUIRE(user);
         FighterSettings settings;
         settings.defence.captured_blocks = true;
-        settings.human_speed_blocks = false; // the clips' own geometry, at the speed the ramp asks (issue 26's bars)
+        settings.human_speed_blocks = false; // the clips' own geometry, at the speed the ramp asks (the captured blocks' own bars)
         settings.human_speed_but_strikes = false;
         Bout b(content->view(), character, settings);
         for (int frame = 0; frame < int(std::min(40.0, user->duration_s()) * 60.0); ++frame) {

@@ -1,4 +1,4 @@
-// The guard kept while striking (DefenceSettings::keep_guard, issue 44): the arm a strike leaves free stays where
+// The guard kept while striking (DefenceSettings::keep_guard): the arm a strike leaves free stays where
 // the guard had it from the head (a kata's punch pulls its other hand to the hip); with defence.keep_guard = false it moves as
 // captured. On the reference database against a still user.
 

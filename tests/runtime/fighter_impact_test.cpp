@@ -1,4 +1,4 @@
-// Strikes that land stop at the target (issue 44's overshoot bar) against recorded boxers replayed as the user, as
+// Strikes that land stop at the target (the overshoot bar) against recorded boxers replayed as the user, as
 // scripts/real_opponents.py plays them: a kick whose last chords turn back towards the kicker drops its foot to the
 // floor after the head, which is not past the head (it was counted so: 12-16 cm, at 1.1 m from box-1 and box-2).
 

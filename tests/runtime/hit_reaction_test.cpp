@@ -1,4 +1,4 @@
-// Hit reactions (issue 44): the captured reactions' courses, the choice for a blow, and a fighter that answers every
+// Hit reactions: the captured reactions' courses, the choice for a blow, and a fighter that answers every
 // landed strike with one, its head going the way the blow pushed; rocked by a blow, it may still slip the next.
 
 #include "fighter_bout.h"

@@ -1,4 +1,4 @@
-// The fighter's motion measured (issue 44): joint speeds from two poses (a wrist moved, an elbow bent), the library's
+// The fighter's motion measured: joint speeds from two poses (a wrist moved, an elbow bent), the library's
 // fastest per kind of move on the reference database, and a fighter's frames counted by kind with the distance it
 // keeps between strikes.
 
@@ -58,7 +58,7 @@ TEST_CASE("joint speeds: the library's fastest punches, kicks and guard on the r
     if (!content) return;
     const kumite::test::StandingCharacter brawler("brawler", content->view());
     const auto library = library_joint_speeds(content->view(), brawler.skeleton(), brawler.anatomy);
-    // Punches ~10-12 m/s at the wrist, kicks as fast at the ankle (issue 44); a guard barely moves.
+    // Punches ~10-12 m/s at the wrist, kicks as fast at the ankle; a guard barely moves.
     CHECK(library[int(MoveKind::punch)].wrist_mps > 6.0);
     CHECK(library[int(MoveKind::punch)].wrist_mps < 20.0);
     CHECK(library[int(MoveKind::kick)].ankle_mps > 6.0);

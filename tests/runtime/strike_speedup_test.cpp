@@ -1,4 +1,4 @@
-// Strikes at a real strike's speed (issue 44): a punch or kick captured slower than a real one lands is played
+// Strikes at a real strike's speed: a punch or kick captured slower than a real one lands is played
 // faster towards its contact (fighter/strike.h: strike_speedup, strike_clip_time), its contact coming when it would
 // as captured; on the reference database against a still user.
 

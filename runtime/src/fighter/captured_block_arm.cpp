@@ -12,7 +12,7 @@
 namespace kumite {
 namespace {
 
-// A punch arriving this far below the chest joint or more is a low one (issue 26: the solar plexus, the belly): the
+// A punch arriving this far below the chest joint or more is a low one (the solar plexus, the belly): the
 // recorded boxers' body punches arrive 27 cm below it to 7 cm above, simulate:punch's at it.
 constexpr double k_low_punch_below_chest_m = 0.1;
 

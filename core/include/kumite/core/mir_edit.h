@@ -26,7 +26,7 @@ void mir_frame_add_offset(MirFrame& frame, const MirFrame& offset, double weight
 
 // The arms of `from` carried onto `frame`'s chest: the clavicles', upper arms', forearms' and hands' frames turned
 // by the turn from `from`'s chest to `frame`'s, the extremities (in their parents' frames) and swivels as `from`
-// has them. A step that keeps the guard's arms (issue 44: steps blended into from a tight guard swung the elbows at
+// has them. A step that keeps the guard's arms (steps blended into from a tight guard swung the elbows at
 // 20+ rad/s towards the loose arms of the walk they were captured in).
 void mir_frame_take_arms(MirFrame& frame, const MirFrame& from);
 

@@ -183,7 +183,7 @@ bool db_clip_is_arm_strike(const DbClip& clip);
 // A leg strike's support foot: the DbPoseFlags bit of the other leg's foot, which it stands on; 0 for arm strikes
 // and clips that are not strikes.
 std::uint32_t db_clip_support_foot(const DbClip& clip);
-// Where a strike makes contact (issue 44: strikes that hit): the first frame, from the farthest its hit point is
+// Where a strike makes contact (strikes that hit): the first frame, from the farthest its hit point is
 // from the annotated hit, where it has covered `extension` of that way (0.9: the limb still travels fast there; the
 // hit is annotated at full extension, where it has stopped). 1 or more: the hit frame itself. With `speed_share` > 0,
 // earlier still when the hit point slows before that: the last frame, after its fastest on the way, before it

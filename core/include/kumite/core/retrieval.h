@@ -14,7 +14,7 @@
 // instead of the target so that distances are the character's). The paper's contact is the annotated hit, at full
 // extension where the limb has stopped: a strike adapted there touches its target. Here the contact is a little
 // earlier, where the hit point has covered `contact_extension` (0.9) of its way to the hit, or before it first slows
-// under `contact_speed_share` (0.85) of its fastest on the way: it still travels fast (issue 44): the strike arrives at speed and the impact stops it (the paper's d(t_c) = X - M(t_c) at that t_c),
+// under `contact_speed_share` (0.85) of its fastest on the way: it still travels fast: the strike arrives at speed and the impact stops it (the paper's d(t_c) = X - M(t_c) at that t_c),
 // with the clip's own timing from the start to it.
 //
 // Search. Candidates are grouped by cluster and order, and each group is a k-d tree (box_tree.h) over two cheap

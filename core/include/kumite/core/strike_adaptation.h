@@ -71,7 +71,7 @@ struct AdaptationSettings {
     // The limb carries the hit point out to this share of its length (or as far as the clip's own limb reaches
     // that frame, when it is straighter); further out the trunk brings the limb's root nearer. A person's punch
     // meets its target with the elbow still bending out, not snapped straight: at full stretch the last
-    // centimetres of reach take the elbow's fastest turn and the fist arrives slow (issue 44). 1: the limb alone
+    // centimetres of reach take the elbow's fastest turn and the fist arrives slow. 1: the limb alone
     // as far as it reaches.
     double limb_reach_share = 0.95;
     // Joint limits of the CCD, as the largest turn away from the clip's own pose (radians): 25 deg for the spine

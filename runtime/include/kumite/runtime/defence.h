@@ -41,7 +41,7 @@ struct DefenceSettings {
     double block_before_m = 0.3;      // where the forearm meets the path: this far before the target
     double max_block_speed_mps = 8.0; // faster wrist moves are not plausible: slip instead
     // A synthesized block's ramp is never so short that its wrist would move faster than this at its fastest (the
-    // smoothstep's: 1.5 times its mean), on top of what the body does (issue 44: no wrist over 12 m/s; the ramp
+    // smoothstep's: 1.5 times its mean), on top of what the body does (no wrist over 12 m/s; the ramp
     // of 0.6 of the time left, started again shorter when the fist turned out faster, moved it at up to 24 m/s).
     // It takes what is left before the fist gets there instead; what cannot arrive in time arrives late.
     double max_block_wrist_mps = 12.0;
@@ -53,12 +53,12 @@ struct DefenceSettings {
     // A block whose strike is over (blocked, or past) gives way to the next threat instead of being held and released
     // first: a combination's next blow, 0.2-0.5 s later, gets a move too (the arm goes on from where it is shown, at
     // the speeds the fighter's limbs are held to). Off: one move at a time, each held and released (0.5 s) before the
-    // next (issue 44: 21 of 45 blows that landed at 1.2 m against the recorded opponents came unanswered while a
+    // next (21 of 45 blows that landed at 1.2 m against the recorded opponents came unanswered while a
     // move for an earlier one was still on). A slip is not handed over: the trunk would snap back.
     bool hand_over_blocks = true;
     // Rocked by a blow, the fighter may still slip the next one: the lean goes on top of the hit reaction's (never
     // past the trunk's limit: a slip leans no further than the trunk may still turn). Off: in a hit reaction only the
-    // arms may cover (issue 44: 37 of 94 blows that would land during reactions landed against the recorded opponents).
+    // arms may cover (37 of 94 blows that would land during reactions landed against the recorded opponents).
     bool slip_in_hit_reaction = true;
     // A block's meeting point follows the fist's course, known better each frame, while the fist still travels at
     // least this fast (a kata's punch closes at 2.5-3 m/s and slows before it arrives: followed only while over the

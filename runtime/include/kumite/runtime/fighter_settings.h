@@ -51,24 +51,24 @@ struct FighterSettings {
     double close_near_legs = 0.35;   // ... unless no strike reaches from the band (an elbow, a knee) or the arms reach
                                      // the head from nowhere (a chibi, a tall user): then from this near
     double landing_in_band = 0.7;    // steps are shortened (feet locked) to land this far from near to far
-    // The fighting distance kept between strikes (issue 44): just out of reach, from rest_near_legs (at least the
+    // The fighting distance kept between strikes: just out of reach, from rest_near_legs (at least the
     // strike band's far end) to rest_far_legs leg lengths, pelvis to head on the floor; the fighter steps in to
     // strike and out after. Off: it rests in the strike band, as the paper's fighter does.
     bool keep_distance = true;
     double rest_near_legs = 0.8;
     double rest_far_legs = 1.2;
-    // Out after a strike (issue 44, "steps in to strike and out after"): with no order waiting, a strike that leaves
+    // Out after a strike: with no order waiting, a strike that leaves
     // the fighter inside the fighting distance recovers stepping back out to it (the step begun with the recovery,
     // the recovery's speeds while it lasts) instead of guarding where it struck until it has rested. Off: it
     // recovers where it stands and steps out from its guard.
     bool step_out_after_strikes = true;
-    // A user who rushes in is evaded (issue 44): one nearer than this (leg lengths, pelvis to head on the floor)
+    // A user who rushes in is evaded: one nearer than this (leg lengths, pelvis to head on the floor)
     // while the fighter steps or recovers from a strike makes it step back at once, not when its step or guard
     // loop ends (resting, it steps out of the fighting distance as soon as it is crowded anyway); with an order
     // waiting, only one nearer than the band its strike starts from. Against the recorded opponents, the blows that
     // landed on it came at a median 0.37 m (those it blocked: 0.58 m). 0: it steps back only where a clip ends.
     double crowd_legs = 0.6;
-    // A strike ends this long after its contact as shown (issue 44: the impact and its recoil, k_pace_back_s of the
+    // A strike ends this long after its contact as shown (the impact and its recoil, k_pace_back_s of the
     // strike's clock back to the clip's pace and a little more): the fighter recovers to its guard from where its
     // limbs are, at human speed, instead of playing out the capture's own way back (a kata's clip goes on 0.3-0.6 s
     // into the performer's next stance). Only a recovery may slip, block with either arm, step out or evade a user
@@ -78,7 +78,7 @@ struct FighterSettings {
     double min_step_scale = 0.15;    // the shortest step, as a fraction of the clip's
     // A step is sized for where the user's head will be when it lands: its horizontal velocity along the line to
     // the fighter over the step clip's length, while the head keeps a settled course at a walking pace
-    // (`lead_walk_mps`, the slowest walk of issue 44's "a user walking the room at 0.6-1.0 m/s"; a user walking away at
+    // (`lead_walk_mps`, the slowest walk of a user walking the room at 0.6-1.0 m/s; a user walking away at
     // 0.7 m/s is a step clip's second, 0.7 m, further by then; a boxer bobbing back and forth is not followed ahead).
     // On by default since 2026-11-30: recorded walkers' orders performed 96.4% instead of 89.8% and hit on 86.4% of
     // strikes instead of 78.5%, the recorded fighters unchanged (blows landed 318 against 312, hits 90.5 / 90.6%);
@@ -116,7 +116,7 @@ struct FighterSettings {
     // and target distance). 0 recent: always the best.
     int variety_recent = 6; // with ~40 clips per order, 6 keeps twenty same orders on at least six clips
     double variety_margin = 0.15;
-    // Strikes at a real strike's speed (issue 44): a punch or kick whose clip arrives at its contact slower than a
+    // Strikes at a real strike's speed: a punch or kick whose clip arrives at its contact slower than a
     // real one meets its target (punch_speed_mps, kick_speed_mps: the speeds real strikes land at; the kata's
     // punches are captured at 2-4 m/s) is played faster up to the contact, at most `max_speedup` times its captured
     // speed (then as captured: the impact, the recovery). 1: every strike as captured. Its joints stay human with
@@ -127,22 +127,22 @@ struct FighterSettings {
     // at 6 the median kick landed at 5.9-6.2 m/s once strikes ended after their recoil (strike_follow_s).
     double kick_speed_mps = 7.0;
     double max_speedup = 1.6;
-    // Human speed (issue 44): no joint shown faster than the library's fastest for its kind of move (speed_limit.h);
+    // Human speed: no joint shown faster than the library's fastest for its kind of move (speed_limit.h);
     // a part that asks for more is shown lagging. Off until the defence reads punches early enough to block at that
     // speed (runtime/README.md, "Human speed").
     bool human_speed = false;
-    // Blocks at human speed (issue 44) with human_speed off: the blocking arm alone held to the library's block
+    // Blocks at human speed with human_speed off: the blocking arm alone held to the library's block
     // speeds (a synthesized block seen late moved its wrist at up to 24 m/s); the rest of the body as asked.
     bool human_speed_blocks = true;
-    // No wrist or ankle shown faster than a person's (k_human_extremity_mps, 12 m/s; issue 44) with human_speed off:
+    // No wrist or ankle shown faster than a person's (k_human_extremity_mps, 12 m/s) with human_speed off:
     // a strike captured faster, or sped up towards a real one's speed with its offset added, lags and lands later
     // (its speed at contact at most that); a turn or lunge that carries a hand too fast holds the whole pose.
     bool human_extremities = true;
-    // Every move at human speed (issue 44) with human_speed off: every joint held to the library's fastest for its
+    // Every move at human speed with human_speed off: every joint held to the library's fastest for its
     // kind of move — steps, the guard, blocks, slips, recoveries, hit reactions, and the limbs a strike leaves free;
     // the striking limb as human_speed_strikes says. Off: only the blocking arm (human_speed_blocks).
     bool human_speed_but_strikes = true;
-    // With human_speed_but_strikes, the striking limb too (issue 44): its elbow or knee held to the library's
+    // With human_speed_but_strikes, the striking limb too: its elbow or knee held to the library's
     // fastest for the kind of strike, like every other joint. An adapted punch whose target asks for the arm's last
     // centimetres of reach straightened the elbow in the contact's frame (60-80 rad/s; the library's punches reach
     // 26 on the scout): held, the fist trails the pose asked for, and the strike goes on at its own pace while it
@@ -151,7 +151,7 @@ struct FighterSettings {
     // wrist or ankle held to a person's (human_extremities).
     bool human_speed_strikes = true;
     double strike_lag_share = 0.5;
-    // Hit reactions (issue 44): a user strike that lands on the head or chest moves the fighter's head and trunk the
+    // Hit reactions: a user strike that lands on the head or chest moves the fighter's head and trunk the
     // way it pushes, from the database's captured hit reactions (hit_reactions.h), blended in over
     // `reaction_blend_s`, then back to the guard. A strike under way is played out first. The blend is as long as the
     // others: over 0.1 s the feet slid onto the clip's stance at 6-9 m/s (the library's reactions move them at 2.4).

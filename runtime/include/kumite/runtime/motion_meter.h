@@ -1,5 +1,5 @@
 #pragma once
-// The fighters' motion measured from outside, every frame (issue 44, "say it in numbers"): the fastest wrist,
+// The fighters' motion measured from outside, every frame: the fastest wrist,
 // ankle, elbow and knee in each kind of move (a frame's kind: the defence's move when one shows, else the strike's
 // kind while striking, else the state), and the distance kept to the user's head between strikes (rest and
 // approach, pelvis to head on the floor). A frame where a fighter changed character is not measured (another
