@@ -234,6 +234,13 @@ void Fighter::move(double t_s) {
     }
     // A blow is answered over its own blend (the reaction's); everything else over the fighter's.
     p.player.play(t_s, p.body, m_state == FighterState::hit_reaction ? m_settings.reaction_blend_s : m_settings.blend_s);
+    // A punch the user's guard stopped: its fist kept out of the gloves while the arm comes back to the guard.
+    const BodyPart struck_with = static_cast<BodyPart>(std::max(0, p.strike.segment()));
+    if (m_state == FighterState::recover && p.strike.user_block() != GuardPart::none && p.user.tracking() &&
+        (struck_with == BodyPart::hand_l || struck_with == BodyPart::hand_r)) {
+        p.defence.keep_fist_off_gloves(struck_with == BodyPart::hand_l ? 0 : 1, p.user.guard(), m_settings.user_guard.striking_radius_m,
+                                       m_settings.user_guard.knuckles_past_wrist_m);
+    }
     p.defence.apply(t_s, -1, p.player.pins(), p.body);
     show(t_s);
 }

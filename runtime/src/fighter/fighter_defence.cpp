@@ -108,7 +108,9 @@ void FighterDefence::apply(double now_s, int striking_segment, const LimbPins& p
         cover_goal[arm] = covering || (m_cover_weight[arm] > 0.0 && now_s - m_cover_end_s[arm] < k_cover_hold_s);
     }
     const bool cover = cover_goal[0] || cover_goal[1] || m_cover_weight[0] > 0.0 || m_cover_weight[1] > 0.0;
-    if (block <= 0.0 && slip <= 0.0 && !lagging && !cover) return;
+    const FistOff fist_off = m_fist_off;
+    m_fist_off.arm = -1;
+    if (block <= 0.0 && slip <= 0.0 && !lagging && !cover && fist_off.arm < 0) return;
     CharacterBody::Rig& rig = body.current();
     const RestAnatomy& anatomy = rig.rig->anatomy();
     // The undefended pose: the shown decode, or a strike's adapted frame (decoded again from its MIR frame, for the
@@ -202,6 +204,19 @@ void FighterDefence::apply(double now_s, int striking_segment, const LimbPins& p
         m_defended_frame.swivel[limb] = swivel_keeping_bend(before[chain.root], natural + pins.extremity_offset_world[limb], bends[arm],
                                                             limb_swivel_reference(m_defended_frame, limb), m_defended_frame.swivel[limb]);
     }
+    // The fist kept out of the user's gloves: the wrist moved off by as much as the fist is in, the elbow's bend kept.
+    if (fist_off.arm >= 0 && !(block > 0.0 && fist_off.arm == block_side)) {
+        const int limb = fist_off.arm == 0 ? int(Limb::arm_l) : int(Limb::arm_r);
+        const LimbChain& chain = anatomy.limbs[limb];
+        const Eigen::Vector3d wrist = rig.decoder.limb_targets()[limb] + pins.extremity_offset_world[limb];
+        const Eigen::Vector3d offset = fist_off_offset(before[chain.middle], wrist);
+        if (offset.squaredNorm() > 0.0) {
+            pins.pinned[limb] = false;
+            pins.extremity_offset_world[limb] += offset;
+            m_defended_frame.swivel[limb] = swivel_keeping_bend(before[chain.root], wrist + offset, bends[fist_off.arm],
+                                                                limb_swivel_reference(m_defended_frame, limb), m_defended_frame.swivel[limb]);
+        }
+    }
     body.decode(m_defended_frame, pins);
     // What is shown, for a recording (shown_mir()): the body's MIR frame stays the undefended one the next blend starts from.
     body.encode(m_shown_mir);
@@ -219,6 +234,23 @@ void FighterDefence::apply(double now_s, int striking_segment, const LimbPins& p
     }
     m_violations += joint_violation_count(violations);
     m_arm_to_note = block > 0.0 || lagging ? block_limb : -1; // measured as shown (note_shown_arm)
+}
+
+Eigen::Vector3d FighterDefence::fist_off_offset(const Eigen::Vector3d& elbow, const Eigen::Vector3d& wrist) const {
+    const Eigen::Vector3d along = wrist - elbow;
+    const Eigen::Vector3d knuckles = along.norm() > 1e-6 ? Eigen::Vector3d(along.normalized() * m_fist_off.knuckles_past_wrist_m) : Eigen::Vector3d::Zero();
+    Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+    for (int side = 0; side < 2; ++side) {
+        if (!m_fist_off.guard->hand(side)) continue;
+        const Eigen::Vector3d fist = wrist + offset + knuckles;
+        const Eigen::Vector3d core = m_fist_off.guard->glove(side);
+        const double in_m = m_fist_off.guard->radius(side == 0 ? GuardPart::glove_l : GuardPart::glove_r) + m_fist_off.fist_radius_m - (fist - core).norm();
+        if (in_m <= 0.0) continue;
+        // Out the way it is in; a fist at the glove's very centre goes back along its forearm.
+        const Eigen::Vector3d out = (fist - core).norm() > 1e-6 ? Eigen::Vector3d((fist - core).normalized()) : Eigen::Vector3d(-knuckles.normalized());
+        offset += in_m * out;
+    }
+    return offset;
 }
 
 void FighterDefence::note_shown_arm(double now_s, const CharacterBody& body) {

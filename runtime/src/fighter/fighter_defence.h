@@ -13,6 +13,7 @@
 #include "fighter/event_log.h"
 
 #include "kumite/runtime/defence.h"
+#include "kumite/runtime/user_guard.h"
 
 namespace kumite {
 
@@ -38,6 +39,11 @@ public:
     // `striking_segment`, -1 when not striking): the move's edits and the guard kept decoded over the pose shown, when
     // either is on.
     void apply(double now_s, int striking_segment, const LimbPins& pins, CharacterBody& body);
+    // This frame's apply() also keeps the fist of `arm` out of the user's gloves (a blocked strike's recovery: the
+    // blend back to the guard from a fist the glove held off swings it through the glove otherwise). Cleared by apply().
+    void keep_fist_off_gloves(int arm, const UserGuard& guard, double fist_radius_m, double knuckles_past_wrist_m) {
+        m_fist_off = {arm, &guard, fist_radius_m, knuckles_past_wrist_m};
+    }
     // After the speed limit: the blocking arm's speed as shown, for the block's event (when apply() edited one).
     void note_shown_arm(double now_s, const CharacterBody& body);
 
@@ -70,6 +76,13 @@ private:
     std::array<double, 2> m_cover_end_s{0.0, 0.0};
     double m_last_apply_s = 0.0;
     UserStrikeEvent m_landed_strike;
+    struct FistOff {
+        int arm = -1; // -1: none this frame
+        const UserGuard* guard = nullptr;
+        double fist_radius_m = 0.0, knuckles_past_wrist_m = 0.0;
+    } m_fist_off;
+    // The fist of m_fist_off's arm pushed out of the gloves it is in: the wrist's offset (world).
+    Eigen::Vector3d fist_off_offset(const Eigen::Vector3d& elbow, const Eigen::Vector3d& wrist) const;
 };
 
 } // namespace kumite

@@ -66,6 +66,7 @@ public:
 
     const StrikePlan& plan() const { return m_plan; }
     int segment() const; // the body part that strikes (the clip's)
+    GuardPart user_block() const { return m_user_block; } // the user's glove or forearm that stopped it, or none
     MirFrame& start_frame() { return m_start_frame; } // (for sizing: CharacterBody)
     // The striking part's centre as shown (world): the fist or foot past the wrist or ankle along the lower bone, or
     // the elbow or knee itself.
