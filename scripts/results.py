@@ -626,7 +626,7 @@ def training_section(bench):
     lines += [f"A session's rows are queued from the frame loop ({f(store['session_writer_add']['median_us'], 2)} µs median, "
               f"{f(store['session_writer_add']['p99_us'], 1)} µs p99 a row) and committed by a thread. A drill's frame time p99 with the store: "
               f"{f(frames['with_store']['median_of_p99_us'])} µs, against {f(frames['no_store_baseline']['median_of_p99_us'])} µs with `--no-store` "
-              f"(ratio {f(frames['p99_ratio'], 2)}, the bar 1.10; `train_store_bench.py`, the reaction test headless, median of {frames['runs']} "
+              f"(ratio {f(frames['p99_ratio'], 2)}, the bar 1.10; `train_store_bench.py`, 600 of the reaction test's attacks headless, median of {frames['runs']} "
               "runs each).", ""]
     return lines
 
