@@ -7,6 +7,11 @@
 
 #include <sqlite3.h>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -84,6 +89,15 @@ Result<void> store_file_check(const std::filesystem::path& store) {
                                                   std::to_string(file_bytes));
     }
     return {};
+}
+
+bool store_being_written(const std::filesystem::path& store) {
+    const int fd = ::open(store.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    // The writer holds flock(LOCK_EX) for its life: a shared lock not granted at once means it is there.
+    const bool held = ::flock(fd, LOCK_SH | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+    ::close(fd); // releases the shared lock if it was granted
+    return held;
 }
 
 } // namespace kumite::training

@@ -27,6 +27,10 @@ int store_schema_version();
 // ~/.local/share/kumite/training.sqlite.
 std::filesystem::path default_store_path();
 
+// Whether a session is writing to `store` now (its SessionWriter holds the store). Call it before opening a reader
+// in this process: it opens and closes a descriptor of the file, and closing one drops the process's SQLite locks.
+bool store_being_written(const std::filesystem::path& store);
+
 inline constexpr double k_no_value = std::numeric_limits<double>::quiet_NaN();
 
 // A session as it starts (what the sessions table holds before its end).

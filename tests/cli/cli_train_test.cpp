@@ -1,14 +1,17 @@
 // kumite train: a drill's parts run in turn at their difficulties (drill_part lines, the report's drill), its attacks
-// at their moments, and the session stored: listed by `kumite sessions`, its attacks in the part they started in; a
-// malformed drill refused with its line before anything (no store made); --no-store stores nothing.
+// at their moments, and the session stored: listed by `kumite sessions` (running while it is written), its attacks in
+// the part they started in; a malformed drill refused with its line before anything (no store made); --no-store stores
+// nothing.
 
 #include "support/test_paths.h"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 using kumite::test::run_command;
 
@@ -121,4 +124,32 @@ TEST_CASE("cli: train refuses a malformed drill with its line before anything st
     CHECK(unstored.status == 0);
     CHECK(!std::filesystem::exists(store));
     CHECK(run_command(kumite_exe() + " train --trainee x").status == 2);
+}
+
+TEST_CASE("cli: sessions marks the session being written as running, and as complete once it ended", "[cli][train]") {
+    const std::filesystem::path folder = kumite::test::make_temp_dir("cli_train_running");
+    const std::filesystem::path drill = write_drill(folder, "drill.toml", k_drill), store = folder / "store.sqlite";
+    // A drill on the wall clock, in the background, for 4 s.
+    run_command("(" + kumite_exe() + " train " + golden() + " --headless --realtime --duration 4 --trainee r --drill " + drill.string() + " --store " +
+                store.string() + " --tracker simulate:still >/dev/null 2>&1 &)");
+    nlohmann::json seen;
+    for (int attempt = 0; attempt < 60 && seen.is_null(); ++attempt) {
+        const auto listed = run_command(kumite_exe() + " sessions --store " + store.string() + " --json");
+        if (listed.status == 0) {
+            const nlohmann::json document = nlohmann::json::parse(listed.out);
+            if (!document.at("sessions").empty()) seen = document.at("sessions")[0];
+        }
+        if (seen.is_null()) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    REQUIRE(!seen.is_null());
+    CHECK(seen.at("running").get<bool>());
+    CHECK_FALSE(seen.at("complete").get<bool>());
+    nlohmann::json ended;
+    for (int attempt = 0; attempt < 200; ++attempt) { // up to 10 s
+        ended = nlohmann::json::parse(run_command(kumite_exe() + " sessions --store " + store.string() + " --json").out).at("sessions")[0];
+        if (ended.at("complete").get<bool>()) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    CHECK(ended.at("complete").get<bool>());
+    CHECK_FALSE(ended.at("running").get<bool>());
 }
