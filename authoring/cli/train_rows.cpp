@@ -2,35 +2,26 @@
 
 #include "train_rows.h"
 
+#include "event_fields.h"
+
 #include <cmath>
 
 namespace kumite::cli {
 namespace {
 
-std::string text_at(const nlohmann::json& line, const char* key) {
-    const auto found = line.find(key);
-    return found != line.end() && found->is_string() ? found->get<std::string>() : std::string();
-}
+using report::flag;
+using report::number_or;
+using report::text;
 
-double number_at(const nlohmann::json& line, const char* key, double otherwise = training::k_no_value) {
-    const auto found = line.find(key);
-    return found != line.end() && found->is_number() ? found->get<double>() : otherwise;
-}
-
-bool flag_at(const nlohmann::json& line, const char* key) {
-    const auto found = line.find(key);
-    return found != line.end() && found->is_boolean() && found->get<bool>();
-}
-
-bool first_fighter(const nlohmann::json& line) { return number_at(line, "fighter", 0.0) == 0.0; }
+bool first_fighter(const nlohmann::json& line) { return number_or(line, "fighter", 0.0) == 0.0; }
 
 } // namespace
 
 void TrainRows::take_part(const nlohmann::json& line) {
-    const int index = int(number_at(line, "part", -1.0));
+    const int index = int(number_or(line, "part", -1.0));
     if (index < 0) return;
     if (std::size_t(index) >= m_parts.size()) m_parts.resize(std::size_t(index) + 1);
-    m_parts[std::size_t(index)] = {text_at(line, "name"), text_at(line, "difficulty"), number_at(line, "end_s", 0.0)};
+    m_parts[std::size_t(index)] = {text(line, "name"), text(line, "difficulty"), number_or(line, "end_s", 0.0)};
 }
 
 int TrainRows::part_at(double t_s) const {
@@ -41,45 +32,45 @@ int TrainRows::part_at(double t_s) const {
 }
 
 std::optional<training::AttackRow> TrainRows::attack(const nlohmann::json& line) {
-    if (text_at(line, "type") != "user_response" || !first_fighter(line)) return std::nullopt;
+    if (text(line, "type") != "user_response" || !first_fighter(line)) return std::nullopt;
     training::AttackRow row;
     row.seq = m_attacks++;
-    row.t_s = number_at(line, "began_s", number_at(line, "t", 0.0));
+    row.t_s = number_or(line, "began_s", number_or(line, "t", 0.0));
     row.part = part_at(row.t_s);
     if (std::size_t(row.part) < m_parts.size()) {
         row.part_name = m_parts[std::size_t(row.part)].name;
         row.difficulty = m_parts[std::size_t(row.part)].difficulty;
     }
-    row.command = text_at(line, "command");
-    row.kind = text_at(line, "kind");
-    row.height = text_at(line, "height");
-    row.side = text_at(line, "clip_side");
-    row.target_part = text_at(line, "target_part");
-    row.combination = text_at(line, "combination");
-    row.blow = int(number_at(line, "blow", 0.0));
-    row.own = flag_at(line, "own");
-    row.result = text_at(line, "result");
-    row.blocked_by = text_at(line, "blocked_by");
-    row.response = text_at(line, "response");
-    row.response_time_s = number_at(line, "response_time_s");
-    row.quality = text_at(line, "quality");
-    row.countered = flag_at(line, "countered");
-    row.counter_landed = row.countered ? int(flag_at(line, "counter_landed")) : -1;
+    row.command = text(line, "command");
+    row.kind = text(line, "kind");
+    row.height = text(line, "height");
+    row.side = text(line, "clip_side");
+    row.target_part = text(line, "target_part");
+    row.combination = text(line, "combination");
+    row.blow = int(number_or(line, "blow", 0.0));
+    row.own = flag(line, "own", false);
+    row.result = text(line, "result");
+    row.blocked_by = text(line, "blocked_by");
+    row.response = text(line, "response");
+    row.response_time_s = number_or(line, "response_time_s", training::k_no_value);
+    row.quality = text(line, "quality");
+    row.countered = flag(line, "countered", false);
+    row.counter_landed = row.countered ? int(flag(line, "counter_landed", false)) : -1;
     return row;
 }
 
 std::optional<training::UserStrikeRow> TrainRows::user_strike(const nlohmann::json& line) {
-    if (text_at(line, "type") != "user_strike_end" || !first_fighter(line)) return std::nullopt;
+    if (text(line, "type") != "user_strike_end" || !first_fighter(line)) return std::nullopt;
     training::UserStrikeRow row;
     row.seq = m_user_strikes++;
-    row.t_s = number_at(line, "t", 0.0);
+    row.t_s = number_or(line, "t", 0.0);
     row.part = part_at(row.t_s);
-    row.hand = text_at(line, "hand");
-    row.aimed_at = text_at(line, "aimed_at");
-    row.move = text_at(line, "move");
-    row.outcome = text_at(line, "outcome");
-    row.defended = flag_at(line, "defended");
-    row.peak_speed_mps = number_at(line, "peak_speed_mps");
+    row.hand = text(line, "hand");
+    row.aimed_at = text(line, "aimed_at");
+    row.move = text(line, "move");
+    row.outcome = text(line, "outcome");
+    row.defended = flag(line, "defended", false);
+    row.peak_speed_mps = number_or(line, "peak_speed_mps", training::k_no_value);
     return row;
 }
 

@@ -3,6 +3,8 @@
 
 #include "session_log.h"
 
+#include "event_fields.h"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -14,6 +16,22 @@ namespace {
 // Coordinates past this are not a room's: a corrupt line.
 constexpr double k_room_limit_m = 1e4;
 constexpr double k_time_limit_s = 1e7;
+
+std::optional<RoomPoint> point(const nlohmann::json& line, const char* key, double t_s) {
+    const auto found = line.find(key);
+    if (found == line.end() || !found->is_array() || found->size() != 3) return std::nullopt;
+    RoomPoint p{t_s};
+    double* out[3] = {&p.x, &p.y, &p.z};
+    for (int i = 0; i < 3; ++i) {
+        const nlohmann::json& value = (*found)[std::size_t(i)];
+        if (!value.is_number()) return std::nullopt;
+        *out[i] = value.get<double>();
+        if (!std::isfinite(*out[i]) || std::abs(*out[i]) > k_room_limit_m) return std::nullopt;
+    }
+    return p;
+}
+
+} // namespace
 
 std::optional<double> number(const nlohmann::json& line, const char* key) {
     const auto found = line.find(key);
@@ -34,22 +52,6 @@ bool flag(const nlohmann::json& line, const char* key, bool fallback) {
     const auto found = line.find(key);
     return found != line.end() && found->is_boolean() ? found->get<bool>() : fallback;
 }
-
-std::optional<RoomPoint> point(const nlohmann::json& line, const char* key, double t_s) {
-    const auto found = line.find(key);
-    if (found == line.end() || !found->is_array() || found->size() != 3) return std::nullopt;
-    RoomPoint p{t_s};
-    double* out[3] = {&p.x, &p.y, &p.z};
-    for (int i = 0; i < 3; ++i) {
-        const nlohmann::json& value = (*found)[std::size_t(i)];
-        if (!value.is_number()) return std::nullopt;
-        *out[i] = value.get<double>();
-        if (!std::isfinite(*out[i]) || std::abs(*out[i]) > k_room_limit_m) return std::nullopt;
-    }
-    return p;
-}
-
-} // namespace
 
 bool SessionLog::stop(std::string why) {
     if (!stopped) stopped = std::move(why);
