@@ -17,8 +17,6 @@ namespace {
 
 constexpr const char* k_style = R"(
 body { font-family: system-ui, "DejaVu Sans", sans-serif; color: #222; margin: 24px 32px; max-width: 1200px; line-height: 1.35; }
-h1 { font-size: 22px; margin: 0 0 4px; } h2 { font-size: 18px; margin: 28px 0 8px; border-bottom: 1px solid #ccc; }
-h3 { font-size: 14px; margin: 14px 0 6px; } p { margin: 4px 0; }
 .source { color: #555; font-size: 13px; }
 .stopped { background: #fff3cd; border: 1px solid #E69F00; padding: 6px 10px; font-size: 14px; }
 table { border-collapse: collapse; font-size: 13px; margin: 4px 16px 8px 0; }
@@ -27,10 +25,8 @@ td.n, th.n { text-align: right; } td.over { color: #b00; font-weight: bold; }
 .tables { display: flex; flex-wrap: wrap; align-items: flex-start; }
 .figures { display: flex; flex-wrap: wrap; align-items: flex-start; gap: 8px; }
 .histograms { display: grid; grid-template-columns: 280px 280px; gap: 4px 16px; }
-svg text { font-family: system-ui, "DejaVu Sans", sans-serif; }
 svg .title { font-size: 12px; font-weight: 600; } svg .tick { font-size: 10px; fill: #444; } svg .label { font-size: 11px; fill: #333; }
 svg .note { font-size: 12px; fill: #888; } svg .axis { stroke: #555; stroke-width: 1; fill-opacity: 0; } svg .grid { stroke: #ddd; stroke-width: 1; }
-.legend { font-size: 12px; color: #333; } .key { margin-right: 14px; white-space: nowrap; } .key svg { vertical-align: -2px; margin-right: 4px; }
 )";
 
 // Microseconds for people: "12 µs", "2.45 ms".
@@ -220,7 +216,7 @@ std::string session_html(const SessionLog& log, const nlohmann::json* play_repor
     const nlohmann::json* end = log.end ? &*log.end : nullptr;
     const double duration_s = json_number(end, {"duration_s"}).value_or(log.last_t_s);
     std::string html = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width\">"
-                       "<title>kumite session" + (source.empty() ? std::string() : " — " + escape_html(source)) + "</title><style>" + k_style +
+                       "<title>kumite session" + (source.empty() ? std::string() : " — " + escape_html(source)) + "</title><style>" + k_page_style + k_style +
                        "</style></head><body>\n<h1>kumite session report</h1>";
     html += "<p class=\"source\">" + (source.empty() ? std::string("events of a bout") : "events: " + escape_html(source)) + " — " + std::to_string(log.lines) +
             " lines read" + (log.unknown_lines ? ", " + std::to_string(log.unknown_lines) + " of types this report does not show" : std::string()) + "</p>";

@@ -21,6 +21,14 @@ inline constexpr const char* grey = "#8C8C8C";
 inline constexpr const char* ink = "#222222";
 } // namespace colour
 
+// The style both report pages (the session's, a trainee's progress) share: headings, paragraphs, SVG text, legends.
+inline constexpr const char* k_page_style = R"(
+h1 { font-size: 22px; margin: 0 0 4px; } h2 { font-size: 18px; margin: 28px 0 8px; border-bottom: 1px solid #ccc; }
+h3 { font-size: 14px; margin: 14px 0 6px; } p { margin: 4px 0; }
+svg text { font-family: system-ui, "DejaVu Sans", sans-serif; }
+.legend { font-size: 12px; color: #333; } .key { margin-right: 14px; white-space: nowrap; } .key svg { vertical-align: -2px; margin-right: 4px; }
+)";
+
 std::string escape_html(std::string_view text);
 // A coordinate or length for SVG: one decimal, no exponent, clamped to ±1e6.
 std::string px(double value);

@@ -111,8 +111,6 @@ namespace {
 
 constexpr const char* k_style = R"(
 body { font-family: system-ui, "DejaVu Sans", sans-serif; color: #222; margin: 24px 32px; max-width: 1280px; line-height: 1.35; }
-h1 { font-size: 22px; margin: 0 0 4px; } h2 { font-size: 18px; margin: 28px 0 8px; border-bottom: 1px solid #ccc; }
-h3 { font-size: 14px; margin: 14px 0 6px; } p { margin: 4px 0; }
 .overview { color: #444; font-size: 14px; }
 table { border-collapse: collapse; font-size: 12.5px; margin: 4px 16px 8px 0; }
 td, th { border-bottom: 1px solid #e3e3e3; padding: 3px 7px 3px 0; text-align: left; vertical-align: top; white-space: nowrap; }
@@ -120,10 +118,8 @@ th.group { border-bottom: 1px solid #999; text-align: center; white-space: norma
 tr.incomplete td { background: #fff3cd; } .tag { font-size: 11px; border: 1px solid #E69F00; border-radius: 3px; padding: 0 4px; }
 .better { color: #006b4f; } .worse { color: #a14400; } .dim { color: #777; }
 .figures { display: flex; flex-wrap: wrap; align-items: flex-start; gap: 8px 20px; } .figures > div { width: min-content; }
-svg text { font-family: system-ui, "DejaVu Sans", sans-serif; }
 svg .title { font-size: 13px; font-weight: 600; } svg .tick { font-size: 10px; fill: #444; } svg .label { font-size: 11px; fill: #333; }
 svg .note { font-size: 12px; fill: #888; } svg .axis { stroke: #555; stroke-width: 1; } svg .grid { stroke: #e2e2e2; stroke-width: 1; }
-.legend { font-size: 12px; color: #333; } .key { margin-right: 14px; white-space: nowrap; } .key svg { vertical-align: -2px; margin-right: 4px; }
 .notes { font-size: 12px; color: #555; max-width: 1000px; }
 )";
 
@@ -451,7 +447,7 @@ Result<std::string> progress_html(const StoreReader& store, const std::string& t
 
 std::string progress_html(const std::string& trainee, const std::vector<SessionProgress>& sessions) {
     std::string html = "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width\"><title>kumite progress — " +
-                       escape_html(trainee) + "</title><style>" + k_style + "</style></head><body>\n<h1>Progress of <span id=\"trainee\">" + escape_html(trainee) +
+                       escape_html(trainee) + "</title><style>" + report::k_page_style + k_style + "</style></head><body>\n<h1>Progress of <span id=\"trainee\">" + escape_html(trainee) +
                        "</span></h1>";
     const long long incomplete = std::count_if(sessions.begin(), sessions.end(), [](const SessionProgress& s) { return !s.session.complete; });
     html += "<p class=\"overview\"><span id=\"sessions-count\">" + std::to_string(sessions.size()) + "</span> session" + (sessions.size() == 1 ? "" : "s");
