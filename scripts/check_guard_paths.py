@@ -16,8 +16,9 @@ head (11 cm) and trunk (a 15 cm capsule 0.30-0.70 m under the head). Then it com
                        [--duration S] [--set name=value ...] [--json OUT] [--bars]
 
 --bars asserts: >= 95% of the strikes that met the guard first reported blocked, <= 2% of the hits through the
-guard, no fist or foot more than 1.5 cm into the glove that blocked it (a glove's padding gives more than that),
-and the events consistent (a blocked strike names a glove or forearm and is no hit).
+guard, no fist or foot more than 1.5 cm into the glove that blocked it (a glove's padding gives more than that), to
+the strike's end nor over the 0.3 s after, and the events consistent (a blocked strike names a glove or forearm and
+is no hit).
 """
 import argparse
 import concurrent.futures
@@ -226,6 +227,8 @@ def main():
         assert through_share <= 0.02, f"{100 * through_share:.1f}% of the hits went through the guard"
         assert total["reported_blocked"] >= 1, "no strike was blocked"
         assert total["deepest_in_glove_m"] <= 0.015, f"a fist went {100 * total['deepest_in_glove_m']:.1f} cm into the glove that blocked it"
+        assert total["deepest_after_end_m"] <= 0.015, \
+            f"a fist went {100 * total['deepest_after_end_m']:.1f} cm into the glove that blocked it after the strike's end"
     return 0
 
 

@@ -154,6 +154,7 @@ void start_clip(MotionPlayer& player, CharacterBody& body, const TrackedUser& us
 void Fighter::play_strike(double t_s) {
     Parts& p = *m_parts;
     p.strike.play(t_s, p.body, p.user);
+    keep_fists_off_gloves();
     p.defence.apply(t_s, std::max(0, p.strike.segment()), p.player.pins(), p.body); // a block or the guard kept with the free arm
     show(t_s);
     if (m_settings.human_speed || m_settings.human_speed_but_strikes || m_settings.human_extremities) {
@@ -234,22 +235,24 @@ void Fighter::move(double t_s) {
     }
     // A blow is answered over its own blend (the reaction's); everything else over the fighter's.
     p.player.play(t_s, p.body, m_state == FighterState::hit_reaction ? m_settings.reaction_blend_s : m_settings.blend_s);
-    // A punch the user's guard stopped: its fist kept out of the gloves while the arm comes back to the guard.
-    const BodyPart struck_with = static_cast<BodyPart>(std::max(0, p.strike.segment()));
-    if (m_state == FighterState::recover && p.strike.user_block() != GuardPart::none && p.user.tracking() &&
-        (struck_with == BodyPart::hand_l || struck_with == BodyPart::hand_r)) {
-        p.defence.keep_fist_off_gloves(struck_with == BodyPart::hand_l ? 0 : 1, p.user.guard(), m_settings.user_guard.striking_radius_m,
-                                       m_settings.user_guard.knuckles_past_wrist_m);
-    }
+    keep_fists_off_gloves();
     p.defence.apply(t_s, -1, p.player.pins(), p.body);
     show(t_s);
+}
+
+void Fighter::keep_fists_off_gloves() {
+    Parts& p = *m_parts;
+    // Only with every arm held to human speed (the default): a fist pushed out of a glove that came on is then shown
+    // no faster than its bar, not at the glove's speed.
+    if (!p.user.tracking() || !m_settings.user_guard.enabled || !(m_settings.human_speed || m_settings.human_speed_but_strikes)) return;
+    p.defence.keep_fists_off_gloves(p.user.guard(), m_settings.user_guard.striking_radius_m, m_settings.user_guard.knuckles_past_wrist_m);
 }
 
 void Fighter::show(double t_s) {
     Parts& p = *m_parts;
     const MoveKind kind = MotionMeter::move_kind(*this, p.db);
     const bool in_part = m_settings.human_speed_but_strikes || m_settings.human_speed_blocks || m_settings.human_extremities;
-    if (m_settings.human_speed) p.speed_limit.apply(t_s, kind, p.body);
+    if (m_settings.human_speed) p.speed_limit.apply(t_s, kind, p.body, SpeedLimit::k_all_limbs, false, &p.defence);
     else if (in_part) { // noted every frame
         // Every limb but a strike's own held to the library's speeds for the kind of move; else the blocking arm, and
         // an arm still behind the pose asked for after its block (a blow landed, the move cancelled): it catches up
@@ -263,7 +266,7 @@ void Fighter::show(double t_s) {
             if (kind == MoveKind::block) limbs |= 1u << p.defence.defence().block_arm();
             for (int arm = 0; arm < 2; ++arm) if (p.speed_limit.held_to_library(arm)) limbs |= 1u << arm;
         }
-        p.speed_limit.apply(t_s, kind, p.body, limbs, m_settings.human_extremities);
+        p.speed_limit.apply(t_s, kind, p.body, limbs, m_settings.human_extremities, &p.defence);
     }
     if ((m_settings.human_speed || in_part) && p.speed_limit.held()) p.defence.shown_held(p.body);
     p.defence.note_shown_arm(t_s, p.body);

@@ -15,6 +15,8 @@ namespace {
 
 constexpr double k_cover_hold_s = 0.2; // a strike's free arm kept in the guard this long after it (the recovery's blend)
 constexpr double k_cover_mps = 3.0;    // how fast the guard's pull moves a wrist on top of its own motion
+constexpr int k_fist_off_rounds = 3;              // rounds out of both gloves, for a fist caught between the two
+constexpr double k_fist_in_tolerance_m = 0.005; // a fist this far into a glove is at it (the push out leaves a few mm)
 
 } // namespace
 
@@ -108,9 +110,26 @@ void FighterDefence::apply(double now_s, int striking_segment, const LimbPins& p
         cover_goal[arm] = covering || (m_cover_weight[arm] > 0.0 && now_s - m_cover_end_s[arm] < k_cover_hold_s);
     }
     const bool cover = cover_goal[0] || cover_goal[1] || m_cover_weight[0] > 0.0 || m_cover_weight[1] > 0.0;
+    // The fists a glove is in, on the pose as it stands: a strike's own arm is left to the strike, a captured block's
+    // arm to its clip (pushed, it would outrun the clip's speed).
     const FistOff fist_off = m_fist_off;
-    m_fist_off.arm = -1;
-    if (block <= 0.0 && slip <= 0.0 && !lagging && !cover && fist_off.arm < 0) return;
+    m_fist_off.guard = nullptr;
+    m_fists_kept = fist_off;
+    std::array<bool, 2> kept_out{}, fist_in{};
+    if (fist_off.guard != nullptr) {
+        const RestAnatomy& anatomy = body.anatomy();
+        const auto shown = body.positions();
+        for (int arm = 0; arm < 2; ++arm) {
+            kept_out[arm] = arm != striking_arm && !(arm == m_defence.block_arm() && (lagging || (block > 0.0 && m_defence.move() == DefenceMove::block_clip)));
+            if (!kept_out[arm]) continue;
+            const LimbChain& chain = anatomy.limbs[arm == 0 ? int(Limb::arm_l) : int(Limb::arm_r)];
+            fist_in[arm] = fist_off_offset(fist_off, shown[chain.middle], shown[chain.extremity]).squaredNorm() > 0.0;
+        }
+    }
+    // Held back only off the block's course: a blocking arm held short of the glove it goes to meet would miss it.
+    m_fists_kept_arms = kept_out;
+    if (block > 0.0 && m_defence.block_arm() >= 0) m_fists_kept_arms[std::size_t(m_defence.block_arm())] = false;
+    if (block <= 0.0 && slip <= 0.0 && !lagging && !cover && !fist_in[0] && !fist_in[1]) return;
     CharacterBody::Rig& rig = body.current();
     const RestAnatomy& anatomy = rig.rig->anatomy();
     // The undefended pose: the shown decode, or a strike's adapted frame (decoded again from its MIR frame, for the
@@ -204,20 +223,10 @@ void FighterDefence::apply(double now_s, int striking_segment, const LimbPins& p
         m_defended_frame.swivel[limb] = swivel_keeping_bend(before[chain.root], natural + pins.extremity_offset_world[limb], bends[arm],
                                                             limb_swivel_reference(m_defended_frame, limb), m_defended_frame.swivel[limb]);
     }
-    // The fist kept out of the user's gloves: the wrist moved off by as much as the fist is in, the elbow's bend kept.
-    if (fist_off.arm >= 0 && !(block > 0.0 && fist_off.arm == block_side)) {
-        const int limb = fist_off.arm == 0 ? int(Limb::arm_l) : int(Limb::arm_r);
-        const LimbChain& chain = anatomy.limbs[limb];
-        const Eigen::Vector3d wrist = rig.decoder.limb_targets()[limb] + pins.extremity_offset_world[limb];
-        const Eigen::Vector3d offset = fist_off_offset(before[chain.middle], wrist);
-        if (offset.squaredNorm() > 0.0) {
-            pins.pinned[limb] = false;
-            pins.extremity_offset_world[limb] += offset;
-            m_defended_frame.swivel[limb] = swivel_keeping_bend(before[chain.root], wrist + offset, bends[fist_off.arm],
-                                                                limb_swivel_reference(m_defended_frame, limb), m_defended_frame.swivel[limb]);
-        }
-    }
     body.decode(m_defended_frame, pins);
+    // The fists kept out of the user's gloves, as the edits placed them: the wrist moved off by as much as the fist
+    // is in, the elbow's bend kept, and the pose decoded again.
+    if (fist_off.guard != nullptr && push_fists_out(fist_off, kept_out, bends, pins, body)) body.decode(m_defended_frame, pins);
     // What is shown, for a recording (shown_mir()): the body's MIR frame stays the undefended one the next blend starts from.
     body.encode(m_shown_mir);
     m_shown = true;
@@ -236,21 +245,55 @@ void FighterDefence::apply(double now_s, int striking_segment, const LimbPins& p
     m_arm_to_note = block > 0.0 || lagging ? block_limb : -1; // measured as shown (note_shown_arm)
 }
 
-Eigen::Vector3d FighterDefence::fist_off_offset(const Eigen::Vector3d& elbow, const Eigen::Vector3d& wrist) const {
-    const Eigen::Vector3d along = wrist - elbow;
-    const Eigen::Vector3d knuckles = along.norm() > 1e-6 ? Eigen::Vector3d(along.normalized() * m_fist_off.knuckles_past_wrist_m) : Eigen::Vector3d::Zero();
-    Eigen::Vector3d offset = Eigen::Vector3d::Zero();
-    for (int side = 0; side < 2; ++side) {
-        if (!m_fist_off.guard->hand(side)) continue;
-        const Eigen::Vector3d fist = wrist + offset + knuckles;
-        const Eigen::Vector3d core = m_fist_off.guard->glove(side);
-        const double in_m = m_fist_off.guard->radius(side == 0 ? GuardPart::glove_l : GuardPart::glove_r) + m_fist_off.fist_radius_m - (fist - core).norm();
-        if (in_m <= 0.0) continue;
-        // Out the way it is in; a fist at the glove's very centre goes back along its forearm.
-        const Eigen::Vector3d out = (fist - core).norm() > 1e-6 ? Eigen::Vector3d((fist - core).normalized()) : Eigen::Vector3d(-knuckles.normalized());
-        offset += in_m * out;
+bool FighterDefence::push_fists_out(const FistOff& fists, const std::array<bool, 2>& arms, const std::array<Eigen::Vector3d, 2>& bends, LimbPins& pins, CharacterBody& body) {
+    const RestAnatomy& anatomy = body.anatomy();
+    const auto decoded = body.current().decoder.model_positions();
+    bool pushed = false;
+    for (int arm = 0; arm < 2; ++arm) {
+        if (!arms[arm]) continue;
+        const int limb = arm == 0 ? int(Limb::arm_l) : int(Limb::arm_r);
+        const LimbChain& chain = anatomy.limbs[limb];
+        const Eigen::Vector3d wrist = decoded[chain.extremity];
+        const Eigen::Vector3d offset = fist_off_offset(fists, decoded[chain.middle], wrist);
+        if (offset.squaredNorm() <= 0.0) continue;
+        pins.pinned[limb] = false;
+        pins.extremity_offset_world[limb] += offset;
+        m_defended_frame.swivel[limb] = swivel_keeping_bend(decoded[chain.root], wrist + offset, bends[arm], limb_swivel_reference(m_defended_frame, limb),
+                                                            m_defended_frame.swivel[limb]);
+        pushed = true;
     }
-    return offset;
+    return pushed;
+}
+
+Eigen::Vector3d FighterDefence::fist_off_offset(const FistOff& fists, const Eigen::Vector3d& elbow, const Eigen::Vector3d& wrist) {
+    const Eigen::Vector3d fist_start = fist_centre(elbow, wrist, fists.knuckles_past_wrist_m);
+    Eigen::Vector3d fist = fist_start;
+    // Out of one glove, then the other, the nearest way; a few rounds, for a fist caught between the two.
+    for (int round = 0; round < 2 * k_fist_off_rounds; ++round) {
+        const int side = round % 2;
+        if (!fists.guard->hand(side)) continue;
+        const Eigen::Vector3d core = fists.guard->glove(side);
+        const double reach = fists.guard->radius(side == 0 ? GuardPart::glove_l : GuardPart::glove_r) + fists.fist_radius_m;
+        Eigen::Vector3d out = fist - core;
+        if (out.norm() >= reach) continue;
+        // At the glove's very centre, back along the forearm.
+        out = out.norm() > 1e-6 ? Eigen::Vector3d(out.normalized()) : Eigen::Vector3d((elbow - wrist).normalized());
+        fist = core + reach * out;
+    }
+    return fist - fist_start;
+}
+
+bool FighterDefence::blocked(const CharacterBody& body, int limb) const {
+    if (m_fists_kept.guard == nullptr || limb > 1 || !m_fists_kept_arms[std::size_t(limb)]) return false;
+    const LimbChain& chain = body.anatomy().limbs[limb == 0 ? int(Limb::arm_l) : int(Limb::arm_r)];
+    const auto shown = body.positions();
+    const Eigen::Vector3d fist = fist_centre(shown[chain.middle], shown[chain.extremity], m_fists_kept.knuckles_past_wrist_m);
+    for (int side = 0; side < 2; ++side) {
+        if (!m_fists_kept.guard->hand(side)) continue;
+        const double reach = m_fists_kept.guard->radius(side == 0 ? GuardPart::glove_l : GuardPart::glove_r) + m_fists_kept.fist_radius_m;
+        if ((fist - m_fists_kept.guard->glove(side)).norm() < reach - k_fist_in_tolerance_m) return true;
+    }
+    return false;
 }
 
 void FighterDefence::note_shown_arm(double now_s, const CharacterBody& body) {

@@ -11,13 +11,14 @@
 #include "fighter/captured_block_arm.h"
 #include "fighter/character_body.h"
 #include "fighter/event_log.h"
+#include "fighter/speed_limit.h"
 
 #include "kumite/runtime/defence.h"
 #include "kumite/runtime/user_guard.h"
 
 namespace kumite {
 
-class FighterDefence {
+class FighterDefence final : public HeldPoseBounds {
 public:
     FighterDefence(const MotionDatabaseView& db, const DefenceSettings& settings) : m_defence(settings), m_block_arm(db) {}
 
@@ -39,11 +40,15 @@ public:
     // `striking_segment`, -1 when not striking): the move's edits and the guard kept decoded over the pose shown, when
     // either is on.
     void apply(double now_s, int striking_segment, const LimbPins& pins, CharacterBody& body);
-    // This frame's apply() also keeps the fist of `arm` out of the user's gloves (a blocked strike's recovery: the
-    // blend back to the guard from a fist the glove held off swings it through the glove otherwise). Cleared by apply().
-    void keep_fist_off_gloves(int arm, const UserGuard& guard, double fist_radius_m, double knuckles_past_wrist_m) {
-        m_fist_off = {arm, &guard, fist_radius_m, knuckles_past_wrist_m};
+    // This frame's apply() also keeps the fists out of the user's gloves: a glove pushes a fist it meets (the guard
+    // pose against a user in close, a blocked strike's recovery swinging back through the glove that stopped it),
+    // every arm but a strike's own (its contact is the strike's) and a captured block's. Cleared by apply().
+    void keep_fists_off_gloves(const UserGuard& guard, double fist_radius_m, double knuckles_past_wrist_m) {
+        m_fist_off = {&guard, fist_radius_m, knuckles_past_wrist_m};
     }
+    // For the speed limit (HeldPoseBounds): an arm held back whose fist would be in one of the user's gloves, of the
+    // arms this frame's apply() kept out of them.
+    bool blocked(const CharacterBody& body, int limb) const override;
     // After the speed limit: the blocking arm's speed as shown, for the block's event (when apply() edited one).
     void note_shown_arm(double now_s, const CharacterBody& body);
 
@@ -77,12 +82,21 @@ private:
     double m_last_apply_s = 0.0;
     UserStrikeEvent m_landed_strike;
     struct FistOff {
-        int arm = -1; // -1: none this frame
-        const UserGuard* guard = nullptr;
-        double fist_radius_m = 0.0, knuckles_past_wrist_m = 0.0;
+        const UserGuard* guard = nullptr; // none this frame
+        double fist_radius_m = 0.0, knuckles_past_wrist_m = k_fist_centre_past_wrist_m;
     } m_fist_off;
-    // The fist of m_fist_off's arm pushed out of the gloves it is in: the wrist's offset (world).
-    Eigen::Vector3d fist_off_offset(const Eigen::Vector3d& elbow, const Eigen::Vector3d& wrist) const;
+    // The fists of `arms` as decoded now pushed out of the user's gloves (`pins` and the defended frame's swivels
+    // edited): whether any was in one.
+    bool push_fists_out(const FistOff& fists, const std::array<bool, 2>& arms, const std::array<Eigen::Vector3d, 2>& bends, LimbPins& pins, CharacterBody& body);
+    // The fist of an arm whose elbow and wrist are given held out of the user's gloves: the wrist's offset
+    // (world), zero when it is in none.
+    static Eigen::Vector3d fist_off_offset(const FistOff& fists, const Eigen::Vector3d& elbow, const Eigen::Vector3d& wrist);
+    static Eigen::Vector3d fist_centre(const Eigen::Vector3d& elbow, const Eigen::Vector3d& wrist, double knuckles_past_wrist_m) {
+        const Eigen::Vector3d along = wrist - elbow;
+        return along.norm() > 1e-6 ? Eigen::Vector3d(wrist + knuckles_past_wrist_m * along.normalized()) : wrist;
+    }
+    FistOff m_fists_kept;            // this frame's apply(): the gloves the fists were kept out of (guard nullptr: none)
+    std::array<bool, 2> m_fists_kept_arms{}; // and the arms kept out of them (not a strike's own, nor a captured block's)
 };
 
 } // namespace kumite

@@ -6,6 +6,7 @@ namespace kumite {
 namespace {
 
 constexpr Limb k_sample_limbs[4] = {Limb::arm_l, Limb::arm_r, Limb::leg_l, Limb::leg_r}; // LimbSample's order
+constexpr int k_bound_halvings = 6;  // a limb held back further to keep it in bounds: its share found to 1/64 of the way
 
 // The search for the share of a step that brings a measure to its bar: the largest share known under the bar (0: the
 // last pose, taken as no speed at all), the smallest known over it (1: the asked pose), and the ratios measured
@@ -122,6 +123,34 @@ bool SpeedLimit::hold_limbs(const LimbBars& bars, const LimbBars& whole_pose_bar
     return *std::max_element(ratios.begin(), ratios.end()) <= 1.0;
 }
 
+void SpeedLimit::keep_in_bounds(const HeldPoseBounds& bounds, CharacterBody& body) {
+    const std::vector<int>& limb_of_joint = m_limb_of_joint[std::size_t(body.index())];
+    std::array<double, 4> share = m_shown_share;
+    auto show = [&](int limb, double limb_share) {
+        share[std::size_t(limb)] = limb_share;
+        blend_limbs(body.pose(), m_last, m_asked, limb_of_joint, share);
+        body.show_edited_pose();
+        return bounds.blocked(body, limb);
+    };
+    for (int limb = 0; limb < 4; ++limb) {
+        const double held = m_shown_share[std::size_t(limb)];
+        if (held >= 1.0 || !bounds.blocked(body, limb)) continue;
+        // Clear where it was last shown (else what it is in came onto it: nothing to hold back from), then the
+        // largest share that is, by halving.
+        if (show(limb, 0.0)) {
+            show(limb, held);
+            continue;
+        }
+        double clear = 0.0, in = held;
+        for (int halving = 0; halving < k_bound_halvings; ++halving) {
+            const double middle = 0.5 * (clear + in);
+            (show(limb, middle) ? in : clear) = middle;
+        }
+        show(limb, clear);
+        m_shown_share[std::size_t(limb)] = clear;
+    }
+}
+
 void SpeedLimit::release_limbs(const LimbBars& whole_pose_bars, double dt_s, CharacterBody& body) {
     const std::vector<int>& limb_of_joint = m_limb_of_joint[std::size_t(body.index())];
     const RestAnatomy& anatomy = body.anatomy();
@@ -162,7 +191,7 @@ void SpeedLimit::hold_pose(const LimbBars& bars, double dt_s, double over, Chara
     m_shown_share = {search.under, search.under, search.under, search.under};
 }
 
-void SpeedLimit::apply(double t_s, MoveKind kind, CharacterBody& body, unsigned limbs, bool extremities) {
+void SpeedLimit::apply(double t_s, MoveKind kind, CharacterBody& body, unsigned limbs, bool extremities, const HeldPoseBounds* bounds) {
     const RestAnatomy& anatomy = body.anatomy();
     const double dt_s = t_s - m_last_s;
     m_shown_share = {1.0, 1.0, 1.0, 1.0};
@@ -190,7 +219,9 @@ void SpeedLimit::apply(double t_s, MoveKind kind, CharacterBody& body, unsigned 
             // The limbs over their bar held back on their own (a punch's leg that lunges too fast does not slow its
             // fist); when the trunk itself carries one too fast, the whole pose.
             m_asked = body.pose();
-            if (!hold_limbs(bars, whole_pose_bars, dt_s, ratios, body)) {
+            const bool limbs_held = hold_limbs(bars, whole_pose_bars, dt_s, ratios, body);
+            if (limbs_held && bounds != nullptr) keep_in_bounds(*bounds, body);
+            if (!limbs_held) {
                 const std::array<double, 4> whole_ratios = limb_ratios(asked, whole_pose_bars, dt_s);
                 const double whole_over = *std::max_element(whole_ratios.begin(), whole_ratios.end());
                 if (whole_over > 1.0) {

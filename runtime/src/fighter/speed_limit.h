@@ -20,6 +20,16 @@
 
 namespace kumite {
 
+// What a pose held back may not do to a limb (limb: LimbSample's order): say, carry a fist into one of the user's
+// gloves, where the pose asked for went round it.
+class HeldPoseBounds {
+public:
+    virtual bool blocked(const CharacterBody& body, int limb) const = 0;
+
+protected:
+    ~HeldPoseBounds() = default;
+};
+
 class SpeedLimit {
 public:
     // `library`: per character of the body, its library speeds (LibrarySpeeds::per_character).
@@ -37,7 +47,10 @@ public:
     // on their own (the trunk shown as asked). `extremities`: every other wrist and ankle held to a person's
     // (k_human_extremity_mps; its elbow or knee free), the whole pose when the trunk carries one too fast. 0 and
     // false: nothing held, the pose only noted as the last shown.
-    void apply(double t_s, MoveKind kind, CharacterBody& body, unsigned limbs = k_all_limbs, bool extremities = false);
+    // `bounds`: a limb held back on its own into a place they forbid (from a pose shown last that was clear) is held
+    // back further, to the largest share that is clear.
+    void apply(double t_s, MoveKind kind, CharacterBody& body, unsigned limbs = k_all_limbs, bool extremities = false,
+               const HeldPoseBounds* bounds = nullptr);
     static constexpr unsigned k_all_limbs = 0xFu;
 
     // Frames held back (the pose shown short of the asked one), per kind, and the furthest a wrist or ankle was
@@ -61,6 +74,7 @@ private:
     // carries it too fast).
     bool hold_limbs(const LimbBars& bars, const LimbBars& whole_pose_bars, double dt_s, const std::array<double, 4>& asked_ratios,
                     CharacterBody& body);
+    void keep_in_bounds(const HeldPoseBounds& bounds, CharacterBody& body); // after hold_limbs
     void hold_pose(const LimbBars& bars, double dt_s, double over, CharacterBody& body); // the whole pose, one share
     // The limbs held by hold_limbs eased back towards the asked pose (itself under `whole_pose_bars`) as far as
     // brings them under those bars.

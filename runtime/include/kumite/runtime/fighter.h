@@ -111,6 +111,7 @@ private:
     void move(double t_s);                                // hold, recover, guard and steps
     void watch_responses(double t_s);                     // the user's answers to the blows (user_response events)
     void show(double t_s);                                // the frame's pose held to human speed, its heading
+    void keep_fists_off_gloves();                         // this frame's pose: no fist inside a glove of the user's
     void enter(FighterState state, double t_s);
     bool busy() const; // striking, recovering, defending or with an order under way: new orders wait
 
