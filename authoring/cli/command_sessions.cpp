@@ -101,18 +101,19 @@ int run_sessions(int argc, char** argv) {
     Result<std::vector<training::TraineeRow>> trainees = store->trainees();
     if (!trainees) return input_error(trainees.error().message);
     if (trainee) std::erase_if(*trainees, [&](const training::TraineeRow& t) { return t.name != *trainee; });
-    Result<std::vector<training::SessionRow>> sessions = store->sessions(trainee);
+    const bool json = arguments.has("json"); // the summaries in it; the table has none
+    Result<std::vector<training::SessionRow>> sessions = store->sessions(trainee, json);
     if (!sessions) return input_error(sessions.error().message);
     // The session being written is the store's newest (a writer adds its session as it starts, one at a time).
     std::int64_t running_id = -1; // -1: none
     if (being_written) {
-        Result<std::vector<training::SessionRow>> all = trainee ? store->sessions() : sessions;
+        Result<std::vector<training::SessionRow>> all = trainee ? store->sessions(std::nullopt, false) : sessions;
         const std::int64_t newest = all ? std::accumulate(all->begin(), all->end(), std::int64_t(-1), [](std::int64_t id, const training::SessionRow& r) { return std::max(id, r.id); }) : -1;
         for (const training::SessionRow& r : all ? *all : std::vector<training::SessionRow>{}) {
             if (r.id == newest && !r.complete) running_id = newest;
         }
     }
-    if (arguments.has("json")) print_json(sessions_json(store_path, *trainees, *sessions, running_id));
+    if (json) print_json(sessions_json(store_path, *trainees, *sessions, running_id));
     else print_sessions(store_path, *sessions, trainees->size(), running_id);
     return k_exit_ok;
 }

@@ -102,9 +102,9 @@ Result<void> StoreReader::check_trainee(const std::string& trainee) const {
                                               (names.empty() ? std::string("the store has no trainee yet") : "its trainees: " + names) + ")");
 }
 
-Result<std::vector<SessionRow>> StoreReader::sessions(const std::optional<std::string>& trainee) const {
-    const std::string columns = "s.id, t.name, s.drill, s.drill_file, s.character, s.tracker, s.started_utc, s.duration_s, s.complete, "
-                                "s.settings_json, s.summary_json, " + std::string(k_session_counts);
+Result<std::vector<SessionRow>> StoreReader::sessions(const std::optional<std::string>& trainee, bool with_json) const {
+    const std::string columns = "s.id, t.name, s.drill, s.drill_file, s.character, s.tracker, s.started_utc, s.duration_s, s.complete, " +
+                                std::string(with_json ? "s.settings_json, s.summary_json, " : "'', '', ") + k_session_counts;
     return m_state->collect<SessionRow>(session_query(columns, trainee.has_value()), trainee, [](const Statement& row) {
         SessionRow session;
         session.id = row.integer(0);

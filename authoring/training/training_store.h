@@ -151,8 +151,9 @@ public:
     Result<std::vector<TraineeRow>> trainees() const;
     // Refuses a name the store has no trainee of, naming the ones it has (what a --trainee flag answers).
     Result<void> check_trainee(const std::string& trainee) const;
-    // Every session, oldest first; of one trainee when `trainee` is given (an unknown name: none).
-    Result<std::vector<SessionRow>> sessions(const std::optional<std::string>& trainee = std::nullopt) const;
+    // Every session, oldest first; of one trainee when `trainee` is given (an unknown name: none). Without
+    // `with_json`, settings_json and summary_json are left empty (a listing: most of a session's bytes are those).
+    Result<std::vector<SessionRow>> sessions(const std::optional<std::string>& trainee = std::nullopt, bool with_json = true) const;
     Result<std::vector<AttackRow>> attacks(std::int64_t session_id) const;
     Result<std::vector<UserStrikeRow>> user_strikes(std::int64_t session_id) const;
     // Every attack of a trainee's sessions, paired with its session's id, in session then seq order.
