@@ -72,9 +72,10 @@ std::string play_summary_text(const nlohmann::json& report, const std::vector<st
         std::string answers;
         for (const auto& [kind, r] : responses.items()) {
             const long long timed = count_at(r, "moved") - count_at(r, "anticipated");
-            answers += (answers.empty() ? "" : "; ") + kind + " " + std::to_string(count_at(r, "blows")) + " (" + std::to_string(count_at(r, "moved")) + " answered" +
-                       (timed > 0 ? ", median " + fixed(number_at(r, pointer("/response_time_s/median")), 2) + " s" : "") + ", " +
-                       std::to_string(std::llround(number_at(r, pointer("/quality/in_time")))) + " in time)";
+            // In time counts a guard already in place too; moved, the answers with a motion (their median time).
+            answers += (answers.empty() ? "" : "; ") + kind + " " + std::to_string(count_at(r, "blows")) + " (" +
+                       std::to_string(std::llround(number_at(r, pointer("/quality/in_time")))) + " in time, " + std::to_string(count_at(r, "moved")) + " moved" +
+                       (timed > 0 ? ", median " + fixed(number_at(r, pointer("/response_time_s/median")), 2) + " s" : "") + ")";
         }
         text += row("user answers", answers);
     }
